@@ -1,0 +1,1 @@
+#include "detectors/pin_frame.h"

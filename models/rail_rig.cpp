@@ -1,0 +1,198 @@
+#include "models/rail_rig.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace tactip {
+
+namespace {
+constexpr double kSensorMassKg = 0.15;  // sensor housing, camera and gel reservoir
+constexpr double kCullMarginM = 1e-3;   // pins within this distance of the stimulus keep a contact geom
+
+std::vector<double> V3(double x, double y, double z) { return {x, y, z}; }
+}  // namespace
+
+double RailConfig::StimulusRadiusM() const {
+  if (stimulus == "curved80") return 0.080;
+  if (stimulus == "curved40") return 0.040;
+  if (stimulus == "curved20") return 0.020;
+  return 0.0;
+}
+
+double ArmConfig::Omega(double moving_mass_kg) const { return std::sqrt(kp_N_m / moving_mass_kg); }
+
+double SensorCentreX(const SkinConfig& skin, double gap_m) { return -skin.radius_mm * 1e-3 - gap_m; }
+
+std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
+                                     double max_depth_m) {
+  const double R = skin.radius_mm * 1e-3;
+  const double rc = skin.contact_radius_mm * 1e-3;
+  const double Rc = rail.StimulusRadiusM();
+  const double cx = -R + max_depth_m;  // dome centre at the deepest press
+  std::vector<bool> out(lattice.size());
+  for (const auto& p : lattice.pins) {
+    // Centre of the pin's contact sphere at the deepest press, object aligned.
+    const double px = cx + (R - rc) * p.normal[0];
+    const double py = (R - rc) * p.normal[1];
+    const double pz = (R - rc) * p.normal[2];
+    if (Rc == 0.0) {
+      out[p.index] = px + rc > -kCullMarginM;
+    } else {
+      const double d = std::sqrt((px - Rc) * (px - Rc) + py * py + pz * pz);
+      out[p.index] = d < Rc + rc + kCullMarginM;
+    }
+  }
+  return out;
+}
+
+namespace {
+// Moving mass carried by the arm's z stage: sensor housing plus skin.
+double SensorMassKg(const SkinMechanics& mech, size_t n_pins) {
+  return kSensorMassKg + mech.shell_mass_kg + static_cast<double>(n_pins) * mech.pin_mass_kg;
+}
+}  // namespace
+
+StiffMode RailStiffestMode(const RailSceneSpec& spec) {
+  const PinLattice lattice = PinLattice::Build(spec.skin);
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
+  StiffMode mode;
+  mode.omega = mech.StiffestOmega();
+  mode.zeta = mech.pin_damping_Ns_m / (2.0 * mech.pin_mass_kg * mode.omega);
+  mode.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, "
+              "skin.thickness_mm, skin.pin_mass_g)";
+  // The z servo carries less mass than the x servo, so it is the stiffer of the two.
+  const double w_arm = spec.arm.Omega(spec.arm.stage_mass_kg + SensorMassKg(mech, lattice.size()));
+  if (w_arm > mode.omega) {
+    mode.omega = w_arm;
+    mode.zeta = spec.arm.damping_ratio;
+    mode.name = "the arm servo (set by arm.kp_N_m, arm.stage_mass_kg)";
+  }
+  return mode;
+}
+
+BuiltScene BuildRailScene(const RailSceneSpec& spec) {
+  const PinLattice lattice = PinLattice::Build(spec.skin);
+  const std::vector<bool> collidable = RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m);
+  SkinPart skin = BuildSmoothSkin(spec.skin, spec.contact, lattice, collidable);
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
+
+  mjcf::Element root("mujoco");
+  root.Set("model", "tactip_rail");
+  root.Add("compiler").Set("angle", "radian").Set("inertiafromgeom", "false");
+  root.Add("option")
+      .Set("timestep", spec.sim.timestep_s)
+      .Set("integrator", "Euler")
+      .Set("solver", "Newton")
+      .Set("jacobian", "auto")
+      .Set("cone", spec.sim.cone)
+      .Set("impratio", spec.sim.impratio)
+      .SetInt("iterations", spec.sim.iterations)
+      .Set("tolerance", spec.sim.tolerance)
+      .SetInt("noslip_iterations", spec.sim.noslip_iterations)
+      .Set("noslip_tolerance", spec.sim.noslip_tolerance)
+      .Set("gravity", V3(0, 0, -9.81));
+  // Contact budget: one contact per collidable pin plus spare; rows for elliptic
+  // contacts (3 each), the rail stop and the rail friction.
+  const int nconmax = skin.n_collidable + 8;
+  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", 3 * nconmax + 16);
+
+  mjcf::Element& world = root.Add("worldbody");
+  world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
+
+  // Rail: a visual beam, the slider on one vertical slide joint, the stimulus on it.
+  const double travel = RailLayout::kRailTravel;
+  world.Add("geom")
+      .Set("name", "rail_beam")
+      .Set("type", "box")
+      .Set("pos", V3(0.045, 0, RailLayout::kAxisHeight + 0.5 * travel))
+      .Set("size", V3(0.01, 0.01, 0.5 * travel + 0.05))
+      .SetInt("contype", 0)
+      .SetInt("conaffinity", 0)
+      .Set("rgba", std::vector<double>{0.4, 0.4, 0.45, 1});
+  mjcf::Element& slider = world.Add("body");
+  slider.Set("name", RailNames::kSlider).Set("pos", V3(0, 0, RailLayout::kAxisHeight));
+  slider.Add("joint")
+      .Set("name", RailNames::kSlide)
+      .Set("type", "slide")
+      .Set("axis", V3(0, 0, 1))
+      .Set("limited", "true")
+      .Set("range", std::vector<double>{0.0, travel})
+      .Set("solreflimit", std::vector<double>{0.005, 1.0})
+      .Set("frictionloss", spec.rail.friction_N)
+      .Set("damping", spec.rail.damping_Ns_m);
+  slider.Add("inertial").Set("pos", V3(0.01, 0, 0)).Set("mass", spec.object.mass_kg)
+      .Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
+  const std::vector<double> friction{spec.contact.friction, 0.005, 0.0001};
+  mjcf::Element& stim = slider.Add("geom");
+  stim.Set("name", RailNames::kStimulus)
+      .SetInt("contype", 2)
+      .SetInt("conaffinity", 0)
+      .SetInt("condim", 3)
+      .Set("friction", friction)
+      .Set("solref", std::vector<double>{spec.contact.timeconst_s, 1.0})
+      .Set("solimp", std::vector<double>{spec.contact.impedance, spec.contact.impedance, 0.001, 0.5, 2})
+      .Set("rgba", std::vector<double>{0.85, 0.6, 0.2, 1});
+  const double Rc = spec.rail.StimulusRadiusM();
+  if (Rc == 0.0) {
+    // Flat: a 50 x 50 mm plate whose face is the plane x = 0.
+    stim.Set("type", "box").Set("pos", V3(0.005, 0, 0)).Set("size", V3(0.005, 0.025, 0.025));
+  } else {
+    // Curved: a sphere cap of radius Rc, apex at x = 0, on a visual base plate.
+    stim.Set("type", "sphere").Set("pos", V3(Rc, 0, 0)).Set("size", std::vector<double>{Rc});
+    slider.Add("geom")
+        .Set("name", "stimulus_plate")
+        .Set("type", "box")
+        .Set("pos", V3(RailLayout::kApexHeight + 0.003, 0, 0))
+        .Set("size", V3(0.003, 0.03, 0.03))
+        .SetInt("contype", 0)
+        .SetInt("conaffinity", 0);
+  }
+
+  // Arm: x stage (normal), z stage (vertical), sensor mount, skin.
+  const double m_sensor = SensorMassKg(mech, lattice.size());
+  const double mx = 2.0 * spec.arm.stage_mass_kg + m_sensor;
+  const double mz = spec.arm.stage_mass_kg + m_sensor;
+  const double x0 = SensorCentreX(spec.skin, spec.rail.approach_gap_mm * 1e-3);
+  mjcf::Element& ax = world.Add("body");
+  ax.Set("name", "arm_x_stage").Set("pos", V3(x0, 0, RailLayout::kAxisHeight));
+  ax.Add("joint").Set("name", RailNames::kArmX).Set("type", "slide").Set("axis", V3(1, 0, 0))
+      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mx));
+  ax.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
+  mjcf::Element& az = ax.Add("body");
+  az.Set("name", "arm_z_stage");
+  az.Add("joint").Set("name", RailNames::kArmZ).Set("type", "slide").Set("axis", V3(0, 0, 1))
+      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mz));
+  az.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
+  mjcf::Element& sensor = az.Add("body");
+  sensor.Set("name", RailNames::kSensor);
+  sensor.Add("inertial").Set("pos", V3(-0.02, 0, 0)).Set("mass", kSensorMassKg).Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
+  sensor.Add("geom")
+      .Set("name", "sensor_housing")
+      .Set("type", "cylinder")
+      .Set("pos", V3(-0.03, 0, 0))
+      .Set("zaxis", V3(1, 0, 0))
+      .Set("size", std::vector<double>{spec.skin.radius_mm * 1e-3 + 0.003, 0.028})
+      .SetInt("contype", 0)
+      .SetInt("conaffinity", 0)
+      .Set("rgba", std::vector<double>{0.15, 0.15, 0.15, 1});
+  sensor.Append(std::move(skin.body));
+
+  // Passive skin coupling and the arm servos.
+  if (!skin.tendons.empty()) {
+    mjcf::Element& tendon = root.Add("tendon");
+    for (auto& t : skin.tendons) tendon.Append(std::move(t));
+  }
+  mjcf::Element& act = root.Add("actuator");
+  act.Add("position").Set("name", RailNames::kServoX).Set("joint", RailNames::kArmX).Set("kp", spec.arm.kp_N_m);
+  act.Add("position").Set("name", RailNames::kServoZ).Set("joint", RailNames::kArmZ).Set("kp", spec.arm.kp_N_m);
+
+  BuiltScene out;
+  out.xml = root.ToXml();
+  out.n_pins = static_cast<int>(lattice.size());
+  out.n_collidable = skin.n_collidable;
+  out.stiffest = RailStiffestMode(spec);
+  return out;
+}
+
+}  // namespace tactip

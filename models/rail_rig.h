@@ -1,0 +1,160 @@
+#pragma once
+// The low-friction rail rig (a slider on one vertical slide joint carrying a
+// stimulus), the arm that carries the sensor, and scene assembly.
+
+#include <string>
+#include <vector>
+
+#include "models/mjcf.h"
+#include "models/skin.h"
+#include "sim/config.h"
+#include "sim/sim_config.h"
+
+namespace tactip {
+
+/// The object on the rail (the `object.` section).
+struct ObjectConfig {
+  double mass_kg = 0.1;  ///< slider + stimulus mass
+
+  template <class V>
+  void Visit(V& v) {
+    v("mass_kg", mass_kg, "kg",
+      "Mass of the slider carriage plus stimulus; its weight m g is what friction must hold.",
+      Bounds::Closed(1e-3, 50.0));
+  }
+  void ValidateRules() const {}
+};
+
+/// Rail rig and protocol (the `rail.` section).
+struct RailConfig {
+  std::string stimulus = "flat";       ///< flat, curved80, curved40, curved20
+  double friction_N = 0.005;           ///< rail dry friction (MuJoCo joint frictionloss)
+  double damping_Ns_m = 0.02;          ///< rail viscous damping
+  double press_depth_mm = 3.0;         ///< indentation at the apex
+  double press_depth_jitter_mm = 0.1;  ///< per-run uniform perturbation of the depth
+  double approach_gap_mm = 2.0;        ///< initial gap between apex and stimulus
+  double press_speed_mm_s = 2.0;       ///< mean speed of the press move
+  double lift_mm = 50.0;               ///< lift distance while holding the object
+  double lift_speed_mm_s = 25.0;       ///< mean speed of the lift move
+  double settle_s = 0.2;               ///< pause before pressing and after the press
+  double hold_s = 0.5;                 ///< pause after the lift, before retraction
+  double retract_speed_mm_s = 0.1;     ///< retraction speed along the normal
+  double post_fall_s = 0.3;            ///< simulated time kept after the object falls
+
+  template <class V>
+  void Visit(V& v) {
+    v("stimulus", stimulus, "",
+      "Stimulus on the slider: flat, or curved (sphere cap, apex height 20 mm) with radius of curvature "
+      "80, 40 or 20 mm.",
+      Choices{"flat", "curved80", "curved40", "curved20"});
+    v("friction_N", friction_N, "N",
+      "Dry friction of the linear rail (recirculating-ball rails: a few mN). Holds the object together "
+      "with the skin: slip when mu * sum(N) + friction_N < m g.",
+      Bounds::Closed(0.0, 10.0));
+    v("damping_Ns_m", damping_Ns_m, "N s/m", "Viscous damping of the rail (lubricant).", Bounds::Closed(0.0, 100.0));
+    v("press_depth_mm", press_depth_mm, "mm",
+      "Indentation of the dome apex into the stimulus (a TacTip tolerates ~7 mm).", Bounds::LeftOpen(0.0, 7.0));
+    v("press_depth_jitter_mm", press_depth_jitter_mm, "mm",
+      "Per-run variation: depth drawn uniformly in press_depth_mm +- jitter. 0 switches it off.",
+      Bounds::Closed(0.0, 2.0));
+    v("approach_gap_mm", approach_gap_mm, "mm", "Gap between apex and stimulus at the start (no-contact frames).",
+      Bounds::Closed(0.5, 50.0));
+    v("press_speed_mm_s", press_speed_mm_s, "mm/s", "Mean speed of the press (smooth quintic profile).",
+      Bounds::LeftOpen(0.0, 100.0));
+    v("lift_mm", lift_mm, "mm", "Lift while the object is held by friction only (protocol: 50 mm).",
+      Bounds::Closed(1.0, 150.0));
+    v("lift_speed_mm_s", lift_speed_mm_s, "mm/s", "Mean speed of the lift (smooth quintic profile).",
+      Bounds::LeftOpen(0.0, 200.0));
+    v("settle_s", settle_s, "s", "Pause at the start and after the press.", Bounds::Closed(0.0, 10.0));
+    v("hold_s", hold_s, "s", "Pause after the lift before retraction starts.", Bounds::Closed(0.0, 10.0));
+    v("retract_speed_mm_s", retract_speed_mm_s, "mm/s",
+      "Retraction speed along the stimulus normal (protocol: 0.1 mm/s offline; 1-20 mm/s online).",
+      Bounds::LeftOpen(0.0, 100.0));
+    v("post_fall_s", post_fall_s, "s", "Simulated time kept after the object falls.", Bounds::Closed(0.0, 5.0));
+  }
+  void ValidateRules() const {}
+  /// Radius of curvature of the stimulus in metres (0 = flat).
+  double StimulusRadiusM() const;
+};
+
+/// The Cartesian arm that carries the sensor (the `arm.` section): two prismatic
+/// joints (normal x, vertical z) under stiff position servos.
+struct ArmConfig {
+  double stage_mass_kg = 0.5;   ///< moving mass of each stage
+  double kp_N_m = 1e5;          ///< servo stiffness of each axis
+  double damping_ratio = 1.0;   ///< servo damping ratio (joint damping, implicit)
+
+  template <class V>
+  void Visit(V& v) {
+    v("stage_mass_kg", stage_mass_kg, "kg", "Moving mass of each arm stage.", Bounds::Closed(0.01, 100.0));
+    v("kp_N_m", kp_N_m, "N/m",
+      "Position-servo stiffness per axis; 1e5 N/m keeps tracking error ~30 um at 3 N contact load.",
+      Bounds::Closed(1e2, 1e7));
+    v("damping_ratio", damping_ratio, "", "Servo damping ratio (joint damping 2 zeta sqrt(kp m)).",
+      Bounds::Closed(0.05, 10.0));
+  }
+  void ValidateRules() const {}
+  /// Servo natural frequency in rad/s for a moving mass.
+  double Omega(double moving_mass_kg) const;
+};
+
+/// Fixed positions of the rig in the world frame (metres).
+struct RailLayout {
+  static constexpr double kAxisHeight = 0.1;   ///< sensor axis / stimulus centre height at rest
+  static constexpr double kApexHeight = 0.02;  ///< curved stimuli protrude 20 mm from their plate
+  static constexpr double kRailTravel = 0.2;   ///< slide joint range above the stop
+};
+
+/// Names of rig elements.
+struct RailNames {
+  static constexpr const char* kSlider = "slider";
+  static constexpr const char* kSlide = "rail_slide";
+  static constexpr const char* kStimulus = "stimulus";
+  static constexpr const char* kArmX = "arm_x";
+  static constexpr const char* kArmZ = "arm_z";
+  static constexpr const char* kServoX = "servo_x";
+  static constexpr const char* kServoZ = "servo_z";
+  static constexpr const char* kSensor = "sensor";
+};
+
+/// Which pins can touch the stimulus when pressed to `max_depth_m` (with a 1 mm margin).
+std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
+                                     double max_depth_m);
+
+/// Everything a rail scene is built from.
+struct RailSceneSpec {
+  SimConfig sim;
+  ObjectConfig object;
+  ContactConfig contact;
+  RailConfig rail;
+  SkinConfig skin;
+  ArmConfig arm;
+  double max_depth_m = 0.0;  ///< deepest press any run will make (for contact culling)
+};
+
+/// The stiffest explicitly integrated spring mode of a scene.
+struct StiffMode {
+  double omega = 0.0;  ///< natural frequency, rad/s
+  double zeta = 0.0;   ///< damping ratio
+  std::string name;    ///< which part it belongs to and the keys that set it
+};
+
+/// The stiffest mode of the rail scene: pin normal mode or arm servo.
+StiffMode RailStiffestMode(const RailSceneSpec& spec);
+
+/// A built scene: the MJCF text and facts about it.
+struct BuiltScene {
+  std::string xml;
+  int n_pins = 0;
+  int n_collidable = 0;
+  StiffMode stiffest;             ///< highest explicit-spring natural frequency
+};
+
+/// Assembles the rail scene: world, rail + slider + stimulus, arm + sensor + skin.
+BuiltScene BuildRailScene(const RailSceneSpec& spec);
+
+/// Initial arm x offset: the dome centre's world x when the apex is `gap_m` from the
+/// stimulus apex (the stimulus apex plane is world x = 0).
+double SensorCentreX(const SkinConfig& skin, double gap_m);
+
+}  // namespace tactip

@@ -1,0 +1,157 @@
+#pragma once
+// The TacTip skin as a pin lattice: geometry of the pins on the dome, the mechanical
+// parameters derived from materials, and the MJCF part that carries them.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "models/mjcf.h"
+#include "sim/config.h"
+
+namespace tactip {
+
+/// Skin geometry and materials (the `skin.` section). Stiffnesses are derived from
+/// these values by SkinMechanics, never set directly.
+struct SkinConfig {
+  double radius_mm = 20.0;          ///< outer dome radius
+  double pitch_mm = 3.0;            ///< pin spacing on the hexagonal lattice (arc length)
+  int rings = 6;                    ///< hexagonal rings around the centre pin (6 -> 127 pins)
+  double thickness_mm = 1.0;        ///< skin thickness
+  double pin_length_mm = 1.5;       ///< how far a pin reaches inwards from the skin's inner surface
+  double pin_mass_g = 0.2;          ///< moving mass per pin (pin plus its gel column)
+  double gel_modulus_kpa = 100.0;   ///< Young's modulus of the gel filling
+  double gel_depth_mm = 20.0;       ///< depth of the gel column under each pin
+  double skin_modulus_mpa = 1.0;    ///< Young's modulus of the skin rubber
+  double damping_ratio = 0.7;       ///< damping ratio of each pin's normal mode
+  double contact_radius_mm = 1.5;   ///< radius of the spherical contact patch at each pin
+
+  template <class V>
+  void Visit(V& v) {
+    v("radius_mm", radius_mm, "mm", "Outer radius of the hemispherical dome (TacTip: 40 mm diameter).",
+      Bounds::Closed(5.0, 100.0));
+    v("pitch_mm", pitch_mm, "mm", "Pin spacing on the hexagonal lattice, measured along the dome (TacTip: 3 mm).",
+      Bounds::Closed(0.5, 20.0));
+    v("rings", rings, "", "Hexagonal rings around the centre pin; N = 1 + 3 r (r + 1) pins (6 -> 127).",
+      Bounds::Closed(0, 12));
+    v("thickness_mm", thickness_mm, "mm",
+      "Skin thickness. Sets the bending coupling between neighbouring pins, D = E t^3 / (12 (1 - nu^2)).",
+      Bounds::Closed(0.1, 5.0));
+    v("pin_length_mm", pin_length_mm, "mm",
+      "Length of each pin inwards from the skin's inner surface; the camera sees the inner end.",
+      Bounds::Closed(0.0, 10.0));
+    v("pin_mass_g", pin_mass_g, "g",
+      "Moving mass per pin: the pin plus its share of gel (gel ~1 g/cm^3 x 7.8 mm^2 cell x 20 mm ~ 0.16 g). "
+      "Larger values slow the pin mode (omega = sqrt(k/m)) and allow a larger timestep.",
+      Bounds::Closed(0.01, 100.0));
+    v("gel_modulus_kpa", gel_modulus_kpa, "kPa",
+      "Young's modulus of the gel. Each pin rests on a gel column: k_normal = E A_cell / h_gel, "
+      "k_shear = (E/3) A_cell / h_gel (incompressible gel). 100 kPa gives ~2.6 N at 3 mm indentation.",
+      Bounds::Closed(1.0, 10000.0));
+    v("gel_depth_mm", gel_depth_mm, "mm", "Height of the gel column under each pin (about the dome radius).",
+      Bounds::Closed(1.0, 100.0));
+    v("skin_modulus_mpa", skin_modulus_mpa, "MPa",
+      "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation).",
+      Bounds::Closed(0.01, 100.0));
+    v("damping_ratio", damping_ratio, "",
+      "Damping ratio of each pin's normal mode (gel viscosity); joint damping 2 zeta sqrt(k m), "
+      "integrated implicitly.",
+      Bounds::Closed(0.0, 10.0));
+    v("contact_radius_mm", contact_radius_mm, "mm",
+      "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",
+      Bounds::Closed(0.1, 10.0));
+  }
+  /// Cross-field rules (the lattice must fit on the hemisphere).
+  void ValidateRules() const;
+};
+
+/// Contact properties of the skin (the `contact.` section).
+struct ContactConfig {
+  double friction = 1.0;            ///< Coulomb coefficient skin-stimulus
+  double friction_jitter = 0.05;    ///< per-run relative perturbation of the friction (uniform +-)
+  double timeconst_s = 0.004;       ///< contact softness time constant
+  double impedance = 0.99;          ///< contact impedance d (solimp), closer to 1 = harder
+
+  template <class V>
+  void Visit(V& v) {
+    v("friction", friction, "",
+      "Coulomb friction coefficient between skin and stimulus (silicone rubber on PLA/acrylic ~0.5-1.5).",
+      Bounds::Closed(0.01, 5.0));
+    v("friction_jitter", friction_jitter, "",
+      "Per-run variation: friction is drawn uniformly in friction * (1 +- jitter). 0 switches it off.",
+      Bounds::RightOpen(0.0, 1.0));
+    v("timeconst_s", timeconst_s, "s",
+      "MuJoCo contact time constant (solref). Must be >= 2 timesteps; with impedance 0.99 the contact "
+      "is ~30x stiffer than a pin's gel spring, so the gel, not the solver, sets the indentation.",
+      Bounds::Closed(1e-4, 0.1));
+    v("impedance", impedance, "",
+      "MuJoCo contact impedance d in (0,1) (solimp dmin = dmax); steady penetration scales with (1-d)/d.",
+      Bounds::Closed(0.5, 0.9999));
+  }
+  void ValidateRules() const {}
+};
+
+/// One pin of the lattice in the sensor frame (x = dome axis, outwards; z = up).
+struct PinGeometry {
+  int index = 0;                        ///< 0 = centre pin
+  int ring = 0;                         ///< hexagonal ring (0 = centre)
+  double polar_rad = 0.0;               ///< angle from the dome axis
+  double azimuth_rad = 0.0;             ///< angle around the axis, from +y towards +z
+  std::array<double, 3> normal{};       ///< outward unit normal of the dome at the pin
+};
+
+/// Pin positions and neighbour pairs of a hexagonal lattice wrapped on the dome
+/// (azimuthal-equidistant: arc length from the apex = planar distance).
+struct PinLattice {
+  std::vector<PinGeometry> pins;                ///< ordered by ring, then azimuth
+  std::vector<std::array<int, 2>> neighbours;   ///< lattice edges (i < j)
+
+  /// Builds the lattice; throws InputError if it does not fit on the hemisphere.
+  static PinLattice Build(const SkinConfig& skin);
+  size_t size() const { return pins.size(); }
+};
+
+/// Spring constants and masses derived from SkinConfig (SI units).
+struct SkinMechanics {
+  double cell_area_m2 = 0.0;        ///< hexagonal cell area per pin
+  double k_normal_N_m = 0.0;        ///< gel column, along the pin normal
+  double k_shear_N_m = 0.0;         ///< gel column, in shear (per pin)
+  double k_bend_N_m = 0.0;          ///< skin bending coupling between neighbours' normal motion
+  double pin_mass_kg = 0.0;
+  double shell_mass_kg = 0.0;       ///< skin membrane mass
+  double pin_damping_Ns_m = 0.0;    ///< normal-mode damping per pin
+  double shell_damping_Ns_m = 0.0;  ///< damping of the skin's in-plane translation
+  double membrane_N_m = 0.0;        ///< in-plane membrane stiffness E t (reported, see README)
+
+  static SkinMechanics From(const SkinConfig& skin, size_t n_pins);
+  /// Highest natural frequency of the pin lattice (rad/s): normal mode with every
+  /// neighbour in antiphase, omega = sqrt((k_n + 12 k_b) / m).
+  double StiffestOmega() const;
+};
+
+/// Names used in the MJCF so scenarios can look the parts up.
+struct SkinNames {
+  static std::string PinBody(int i);
+  static std::string PinJoint(int i);
+  static std::string PinGeom(int i);
+  static std::string PinSite(int i);       ///< inner end of the pin (what the camera sees)
+  static std::string PinOuterSite(int i);  ///< outer contact point (external markers)
+  static constexpr const char* kShell = "skin_shell";
+};
+
+/// The MJCF part of a skin: a body subtree to hang under the sensor mount, tendons,
+/// and which pins carry a collision geom.
+struct SkinPart {
+  mjcf::Element body{"body"};
+  std::vector<mjcf::Element> tendons;
+  std::vector<bool> collidable;  ///< per pin
+  int n_collidable = 0;
+};
+
+/// Builds the smooth TacTip part. `collidable[i]` says whether pin i gets a contact
+/// geom (pins that cannot touch the stimulus get none). Contact bits: pins have
+/// contype 0 / conaffinity 2, so they touch only geoms with contype 2.
+SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
+                         const std::vector<bool>& collidable);
+
+}  // namespace tactip

@@ -1,0 +1,44 @@
+// Speed of the rail scene (Google Benchmark). Run: build/release/tactip_benchmarks
+// Reports the real-time factor (simulated seconds per wall second) on one core.
+
+#include <benchmark/benchmark.h>
+
+#include "scenarios/rail.h"
+
+namespace {
+
+// One complete default rail run (press, lift, retract at 0.1 mm/s until the fall)
+// with camera sampling, labels and contact read-out, on the calling thread.
+void BM_RailRunDefault(benchmark::State& state) {
+  const tactip::RailScenarioConfig cfg;
+  const tactip::RailScenario scenario(cfg);
+  double sim_s = 0.0;
+  for (auto _ : state) {
+    tactip::RunRecord rec;
+    const auto s = scenario.Run(0, 1, rec);
+    sim_s += s.sim_time_s;
+    benchmark::DoNotOptimize(rec.time.data());
+  }
+  state.counters["sim_s_per_run"] = sim_s / static_cast<double>(state.iterations());
+  state.counters["real_time_factor"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_RailRunDefault)->Unit(benchmark::kSecond)->Iterations(3)->UseRealTime();
+
+// The same run with a given timestep: the cost side of the accuracy/run-time curve.
+void BM_RailRunTimestep(benchmark::State& state) {
+  tactip::RailScenarioConfig cfg;
+  cfg.sim.timestep_s = static_cast<double>(state.range(0)) * 1e-4;
+  cfg.contact.timeconst_s = std::max(cfg.contact.timeconst_s, 2.0 * cfg.sim.timestep_s);
+  const tactip::RailScenario scenario(cfg);
+  double sim_s = 0.0;
+  for (auto _ : state) {
+    tactip::RunRecord rec;
+    sim_s += scenario.Run(0, 1, rec).sim_time_s;
+  }
+  state.counters["real_time_factor"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_RailRunTimestep)->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,228 @@
+// tactip: the command-line program of tactip-sim.
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "scenarios/registry.h"
+#include "sensors/dataset.h"
+#include "sim/files.h"
+#include "sim/simulation.h"
+#include "tactip/version.h"
+
+namespace {
+
+// Set by SIGINT/SIGTERM; long runs poll it and stop cleanly (no partial output). A
+// signal handler can only reach a global.
+std::atomic<bool> g_stop{false};
+
+void OnSignal(int) { g_stop = true; }
+
+std::string Fmt(double v, const char* spec = "{:.3f}") {
+  return std::isnan(v) ? std::string("-") : fmt::format(fmt::runtime(spec), v);
+}
+
+double Attr(const tactip::RunRecord& r, const std::string& key) {
+  auto it = r.attrs.find(key);
+  return it == r.attrs.end() ? std::nan("") : it->second;
+}
+
+// Prints what a dataset holds: header, one line per run, totals, and (optionally) the
+// resolved config.
+void PrintDatasetSummary(const std::string& path, bool with_config) {
+  tactip::DatasetReader reader(path);
+  const auto& h = reader.header();
+  const auto& runs = reader.run_indices();
+  std::printf("dataset      %s\n", path.c_str());
+  std::printf("scenario     %s (tactip %s, seed %llu)\n", h.scenario.c_str(), h.tactip_version.c_str(),
+              static_cast<unsigned long long>(h.seed));
+  std::printf("runs         %zu\n", runs.size());
+  std::printf("%5s %7s %9s %10s %10s %10s %8s %9s %8s %9s\n", "run", "frames", "length_s", "onset_s", "fall_s",
+              "coulomb_s", "mu", "depth_mm", "v_mm_s", "creep_um");
+  size_t frames = 0;
+  int slipped = 0;
+  double err_sum = 0.0;
+  int err_n = 0;
+  for (int idx : runs) {
+    const tactip::RunRecord r = reader.ReadRunSummary(idx);
+    frames += r.frames();
+    const double onset = Attr(r, "gross_slip_onset_s");
+    const double pred = Attr(r, "predicted_onset_s");
+    if (!std::isnan(onset)) ++slipped;
+    if (!std::isnan(onset) && !std::isnan(pred)) {
+      err_sum += std::abs(onset - pred);
+      ++err_n;
+    }
+    std::printf("%5d %7zu %9.2f %10s %10s %10s %8.4f %9.3f %8.3f %9s\n", idx, r.frames(),
+                r.frames() ? r.time.back() : 0.0, Fmt(onset).c_str(), Fmt(Attr(r, "object_fall_s")).c_str(),
+                Fmt(pred).c_str(), Attr(r, "friction_coefficient"), Attr(r, "press_depth_mm"),
+                Attr(r, "retract_speed_mm_s"), Fmt(Attr(r, "creep_um"), "{:.2f}").c_str());
+  }
+  std::printf("total        %zu frames; gross slip in %d of %zu runs", frames, slipped, runs.size());
+  if (err_n > 0) std::printf("; mean |onset - Coulomb prediction| = %.1f ms", 1e3 * err_sum / err_n);
+  std::printf("\n");
+  if (with_config) std::printf("config:\n%s", h.config_yaml.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"tactip-sim: a MuJoCo simulator of the TacTip optical tactile sensor, with exact slip ground truth.\n"
+               "Scenarios build a scene, drive a protocol and write labelled HDF5 datasets."};
+  app.set_version_flag("--version", std::string("tactip ") + TACTIP_VERSION);
+  app.require_subcommand(1);
+
+  // tactip scenarios
+  auto* cmd_list = app.add_subcommand("scenarios", "List the registered scenarios with one-line descriptions.");
+
+  // Shared config options.
+  std::string scenario_name, config_path, out_path;
+  std::vector<std::string> sets;
+  double speed = std::nan("");
+  std::string stimulus;
+  auto add_config_opts = [&](CLI::App* c) {
+    c->add_option("scenario", scenario_name, "Scenario name (see 'tactip scenarios').")->required();
+    c->add_option("--config", config_path,
+                  "YAML config file; its keys override the built-in defaults (see assets/scenes/).")
+        ->check(CLI::ExistingFile);
+    c->add_option("--set", sets,
+                  "Override one config key, e.g. --set sensor.pixel_noise_px=0.3 (repeatable; applied after "
+                  "--config and the shortcut options). 'tactip config SCENARIO' lists every key.")
+        ->type_name("KEY=VALUE");
+    c->add_option("--speed-mm-s", speed, "Shortcut for --set rail.retract_speed_mm_s=V.");
+    c->add_option("--stimulus", stimulus,
+                  "Shortcut for --set rail.stimulus=S (flat, curved80, curved40, curved20).");
+  };
+
+  // tactip generate
+  auto* cmd_gen = app.add_subcommand("generate", "Simulate runs of a scenario and write a labelled HDF5 dataset.");
+  add_config_opts(cmd_gen);
+  int runs = 4, jobs = 0;
+  unsigned long long seed = 1;
+  bool quiet = false;
+  cmd_gen->add_option("--runs", runs, "Number of runs (default 4).")->check(CLI::Range(1, 100000));
+  cmd_gen->add_option("--seed", seed, "Master seed; run i derives its own seed from it (default 1).");
+  cmd_gen->add_option("--out", out_path, "Output HDF5 file (default SCENARIO.h5); written atomically.");
+  cmd_gen->add_option("--jobs", jobs, "Worker threads (default: all cores); results do not depend on it.")
+      ->check(CLI::Range(0, 256));
+  cmd_gen->add_flag("--quiet", quiet, "No per-run progress lines.");
+
+  // tactip info
+  std::string info_path;
+  bool no_config = false;
+  auto* cmd_info = app.add_subcommand("info", "Show the runs, frames, slip onsets and config of a dataset.");
+  cmd_info->add_option("file", info_path, "HDF5 dataset written by 'tactip generate'.")->required();
+  cmd_info->add_flag("--no-config", no_config, "Do not print the stored config.");
+
+  // tactip export-mjcf
+  auto* cmd_export = app.add_subcommand("export-mjcf", "Write the exact MuJoCo model (MJCF) a scenario builds.");
+  add_config_opts(cmd_export);
+  cmd_export->add_option("--out", out_path, "Output XML file (default: standard output).");
+
+  // tactip config
+  bool as_yaml = false;
+  auto* cmd_config = app.add_subcommand("config", "List every config key of a scenario with unit, range and meaning.");
+  add_config_opts(cmd_config);
+  cmd_config->add_flag("--yaml", as_yaml, "Print the resolved config as YAML instead of the table.");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "tactip: %s (see --help)\n", e.what());
+    return 2;
+  }
+
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
+  try {
+    if (*cmd_list) {
+      for (const auto& s : tactip::Scenarios()) std::printf("%-12s %s\n", s.name.c_str(), s.description.c_str());
+      return 0;
+    }
+    if (*cmd_info) {
+      PrintDatasetSummary(info_path, !no_config);
+      return 0;
+    }
+    const tactip::ScenarioEntry& entry = tactip::FindScenario(scenario_name);
+    tactip::ConfigSource src;
+    src.yaml_path = config_path;
+    if (!std::isnan(speed)) src.overrides.push_back(fmt::format("rail.retract_speed_mm_s={}", speed));
+    if (!stimulus.empty()) src.overrides.push_back("rail.stimulus=" + stimulus);
+    src.overrides.insert(src.overrides.end(), sets.begin(), sets.end());
+
+    if (*cmd_config) {
+      const auto fields = entry.describe(src);
+      if (as_yaml) {
+        std::printf("%s", tactip::FieldsToYaml(fields).c_str());
+        return 0;
+      }
+      for (const auto& f : fields) {
+        std::printf("%-32s %-12s %-8s %-16s %s\n", f.key.c_str(), f.value.c_str(), f.unit.c_str(), f.allowed.c_str(),
+                    f.doc.c_str());
+      }
+      return 0;
+    }
+    if (*cmd_export) {
+      const std::string xml = entry.export_mjcf(src);
+      if (out_path.empty()) {
+        std::printf("%s", xml.c_str());
+      } else {
+        tactip::WriteFileAtomic(out_path, xml);
+        std::fprintf(stderr, "wrote %s (%zu bytes)\n", out_path.c_str(), xml.size());
+      }
+      return 0;
+    }
+    if (*cmd_gen) {
+      entry.describe(src);  // validates the config before anything is printed or written
+      tactip::GenerateOptions opts;
+      opts.runs = runs;
+      opts.seed = seed;
+      opts.jobs = jobs;
+      opts.scenario = entry.name;
+      opts.out_path = out_path.empty() ? entry.name + ".h5" : out_path;
+      opts.stop = &g_stop;
+      if (!quiet) {
+        opts.progress = [](int done, int total, int idx, const tactip::RailRunSummary& s) {
+          std::fprintf(stderr, "[%d/%d] run %d: onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s\n",
+                       done, total, idx, Fmt(s.gross_slip_onset_s).c_str(), Fmt(s.object_fall_s).c_str(),
+                       Fmt(s.predicted_onset_s).c_str(), s.sim_time_s, s.wall_time_s);
+        };
+        std::fprintf(stderr, "generating %d %s run(s) into %s\n", runs, entry.name.c_str(), opts.out_path.c_str());
+      }
+      const tactip::GenerateResult r = entry.generate(src, opts);
+      std::fprintf(stderr, "done: %d runs, %.1f s simulated in %.1f s wall (%.1fx real time overall)\n", r.runs,
+                   r.sim_time_s, r.wall_time_s, r.sim_time_s / r.wall_time_s);
+      PrintDatasetSummary(opts.out_path, false);
+      return 0;
+    }
+  } catch (const tactip::InputError& e) {
+    std::fprintf(stderr, "tactip: %s\n", e.what());
+    return 2;
+  } catch (const tactip::ModelError& e) {
+    std::fprintf(stderr, "tactip: %s\n", e.what());
+    return 2;
+  } catch (const tactip::SimulationError& e) {
+    std::fprintf(stderr, "tactip: %s\n", e.what());
+    return 3;
+  } catch (const tactip::Interrupted&) {
+    std::fprintf(stderr, "tactip: interrupted; no output written\n");
+    return 130;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tactip: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,38 @@
+#pragma once
+// The one place where scenarios are named. The command line lists and runs them
+// through this registry.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scenarios/rail.h"
+#include "sim/config.h"
+
+namespace tactip {
+
+/// How a scenario is configured from the command line: a YAML file and key=value
+/// overrides applied in order on top of the built-in defaults.
+struct ConfigSource {
+  std::string yaml_path;               ///< empty: defaults only
+  std::vector<std::string> overrides;  ///< "key=value", applied after the file
+};
+
+/// A registered scenario.
+struct ScenarioEntry {
+  std::string name;         ///< command-line name
+  std::string description;  ///< one line for `tactip scenarios`
+  /// Documentation of every config field (with defaults, or with the source applied).
+  std::function<std::vector<FieldDoc>(const ConfigSource&)> describe;
+  /// The MJCF of the scene the scenario builds for this config.
+  std::function<std::string(const ConfigSource&)> export_mjcf;
+  /// Generates a dataset; `opts.out_path` names the file.
+  std::function<GenerateResult(const ConfigSource&, const GenerateOptions&)> generate;
+};
+
+/// All registered scenarios, in listing order.
+const std::vector<ScenarioEntry>& Scenarios();
+/// The scenario named `name`; throws InputError listing the known names.
+const ScenarioEntry& FindScenario(const std::string& name);
+
+}  // namespace tactip

@@ -1,0 +1,83 @@
+#pragma once
+// The internal camera of the TacTip: pinhole projection of the inner pin ends into the
+// image, frame timing independent of the physics step, pixel noise and missed
+// detections.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "sim/config.h"
+#include "sim/random.h"
+
+namespace tactip {
+
+/// Camera intrinsics, placement, rate and noise (the `sensor.` section).
+struct CameraConfig {
+  double frame_rate_hz = 100.0;   ///< frames per second
+  int width_px = 640;             ///< image width
+  int height_px = 480;            ///< image height
+  double fx_px = 580.0;           ///< focal length in pixels, horizontal
+  double fy_px = 580.0;           ///< focal length in pixels, vertical
+  double cx_px = 320.0;           ///< principal point, horizontal
+  double cy_px = 240.0;           ///< principal point, vertical
+  double camera_offset_mm = 25.0; ///< camera distance behind the dome centre, on the axis
+  double pixel_noise_px = 0.28;   ///< std of Gaussian noise on each pixel coordinate
+  double dropout_prob = 0.005;    ///< probability that a pin is not detected in a frame
+
+  template <class V>
+  void Visit(V& v) {
+    v("frame_rate_hz", frame_rate_hz, "Hz",
+      "Camera frame rate; frames sample the physics state independently of the timestep.",
+      Bounds::Closed(1.0, 2000.0));
+    v("width_px", width_px, "px", "Image width.", Bounds::Closed(16, 8192));
+    v("height_px", height_px, "px", "Image height.", Bounds::Closed(16, 8192));
+    v("fx_px", fx_px, "px", "Horizontal focal length (580 px puts the outer ring ~220 px from the centre).",
+      Bounds::Positive());
+    v("fy_px", fy_px, "px", "Vertical focal length.", Bounds::Positive());
+    v("cx_px", cx_px, "px", "Principal point, horizontal.", Bounds::Any());
+    v("cy_px", cy_px, "px", "Principal point, vertical.", Bounds::Any());
+    v("camera_offset_mm", camera_offset_mm, "mm",
+      "Distance of the camera's optical centre behind the dome centre along the sensor axis.",
+      Bounds::Closed(1.0, 200.0));
+    v("pixel_noise_px", pixel_noise_px, "px",
+      "Std of Gaussian noise per pixel coordinate. 0.28 px gives the hardware's ~0.5 px/frame pin-speed noise "
+      "(|difference of two noisy 2-D positions| has mean 1.77 sigma).",
+      Bounds::Closed(0.0, 20.0));
+    v("dropout_prob", dropout_prob, "",
+      "Probability that a pin is missed in a frame; a missed pin keeps its previous position and valid = 0.",
+      Bounds::RightOpen(0.0, 1.0));
+  }
+  void ValidateRules() const {}
+};
+
+/// Pinhole camera on the sensor axis looking along +x (the dome's outward axis).
+/// Image u grows with sensor +y, image v grows with sensor -z (down).
+class PinholeCamera {
+ public:
+  explicit PinholeCamera(const CameraConfig& cfg) : cfg_(cfg) {}
+  /// Projects a point in the sensor frame (metres) to pixels; the point must lie in
+  /// front of the camera.
+  std::array<double, 2> Project(const std::array<double, 3>& p_sensor_m) const;
+
+ private:
+  CameraConfig cfg_;
+};
+
+/// Frame `k` of a camera at `rate_hz` is taken at the physics step nearest to k / rate.
+long long FrameStep(long long k, double rate_hz, double timestep_s);
+
+/// Adds noise and dropouts to one frame of projected pin positions, in place.
+/// `prev_px` holds the previous reported positions (empty on the first frame).
+class DetectionNoise {
+ public:
+  DetectionNoise(const CameraConfig& cfg, std::uint64_t seed) : cfg_(cfg), rng_(seed) {}
+  /// `px` (N x 2, row-major) is replaced by what the tracker reports; `valid` (N) set.
+  void Apply(std::vector<float>& px, std::vector<std::uint8_t>& valid, const std::vector<float>& prev_px);
+
+ private:
+  CameraConfig cfg_;
+  Rng rng_;
+};
+
+}  // namespace tactip

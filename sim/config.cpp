@@ -1,0 +1,239 @@
+#include "sim/config.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace tactip {
+
+std::string Bounds::Check(double v) const {
+  if (!std::isfinite(v)) return "must be a finite number";
+  // Name the violated side only: "must be > 0", "must be <= 100".
+  if (lo_open ? !(v > lo) : !(v >= lo)) {
+    return std::string("must be ") + (lo_open ? "> " : ">= ") + config_detail::FormatReal(lo);
+  }
+  if (hi_open ? !(v < hi) : !(v <= hi)) {
+    return std::string("must be ") + (hi_open ? "< " : "<= ") + config_detail::FormatReal(hi);
+  }
+  return {};
+}
+
+std::string Bounds::Describe() const {
+  auto num = [](double x) { return std::isinf(x) ? std::string(x < 0 ? "-inf" : "inf") : config_detail::FormatReal(x); };
+  return std::string(lo_open || std::isinf(lo) ? "(" : "[") + num(lo) + ", " + num(hi) +
+         (hi_open || std::isinf(hi) ? ")" : "]");
+}
+
+namespace config_detail {
+
+std::string FormatReal(double v) {
+  // Shortest text that parses back to the same double.
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, res.ptr);
+}
+
+double ParseReal(const std::string& key, const std::string& text) {
+  double v = 0.0;
+  const char* b = text.data();
+  const char* e = b + text.size();
+  auto res = std::from_chars(b, e, v);
+  if (res.ec != std::errc() || res.ptr != e || text.empty()) {
+    throw InputError(key + " = '" + text + "': not a number");
+  }
+  return v;
+}
+
+long long ParseInt(const std::string& key, const std::string& text) {
+  long long v = 0;
+  const char* b = text.data();
+  const char* e = b + text.size();
+  auto res = std::from_chars(b, e, v);
+  if (res.ec != std::errc() || res.ptr != e || text.empty()) {
+    throw InputError(key + " = '" + text + "': not an integer");
+  }
+  return v;
+}
+
+bool ParseBool(const std::string& key, const std::string& text) {
+  if (text == "true" || text == "1" || text == "yes" || text == "on") return true;
+  if (text == "false" || text == "0" || text == "no" || text == "off") return false;
+  throw InputError(key + " = '" + text + "': not a boolean (true/false)");
+}
+
+void CheckBounds(const std::string& key, double v, const Bounds& b) {
+  const std::string rule = b.Check(v);
+  if (!rule.empty()) throw InputError(key + " = " + FormatReal(v) + ": " + rule);
+}
+
+void CheckChoice(const std::string& key, const std::string& v, const Choices& c) {
+  for (const auto& x : c) {
+    if (x == v) return;
+  }
+  std::string list;
+  for (const auto& x : c) list += (list.empty() ? "" : ", ") + x;
+  throw InputError(key + " = '" + v + "': must be one of " + list);
+}
+
+}  // namespace config_detail
+
+namespace {
+
+// Walks a YAML node, writing every scalar leaf under its dotted key.
+void Flatten(const YAML::Node& node, const std::string& prefix, const std::string& source, FlatConfig& out) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map:
+      for (const auto& kv : node) {
+        const std::string k = kv.first.as<std::string>();
+        Flatten(kv.second, prefix.empty() ? k : prefix + "." + k, source, out);
+      }
+      break;
+    case YAML::NodeType::Scalar:
+      out[prefix] = node.Scalar();
+      break;
+    case YAML::NodeType::Null:
+      if (!prefix.empty()) throw InputError(source + ": key '" + prefix + "' has no value");
+      break;
+    default:
+      throw InputError(source + ": key '" + prefix + "' must be a scalar or a mapping");
+  }
+}
+
+}  // namespace
+
+FlatConfig FlattenYaml(const std::string& yaml_text, const std::string& source) {
+  FlatConfig out;
+  try {
+    const YAML::Node root = YAML::Load(yaml_text);
+    if (root.IsNull()) return out;
+    if (!root.IsMap()) throw InputError(source + ": top level must be a mapping of sections");
+    Flatten(root, "", source, out);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source + ": malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+  return out;
+}
+
+FlatConfig FlattenYamlFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read config file '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return FlattenYaml(ss.str(), path);
+}
+
+std::pair<std::string, std::string> ParseAssignment(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError("--set '" + text + "': expected key=value");
+  }
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+const std::string* AssignVisitor::Take(std::string_view name) {
+  auto it = values_.find(Key(name));
+  if (it == values_.end()) return nullptr;
+  taken_ = it->second;
+  values_.erase(it);
+  return &taken_;
+}
+
+void AssignVisitor::operator()(std::string_view name, double& f, std::string_view, std::string_view, const Bounds&) {
+  if (const auto* t = Take(name)) f = config_detail::ParseReal(Key(name), *t);
+}
+void AssignVisitor::operator()(std::string_view name, int& f, std::string_view, std::string_view, const Bounds&) {
+  if (const auto* t = Take(name)) {
+    const long long v = config_detail::ParseInt(Key(name), *t);
+    if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
+      throw InputError(Key(name) + " = " + *t + ": out of integer range");
+    }
+    f = static_cast<int>(v);
+  }
+}
+void AssignVisitor::operator()(std::string_view name, bool& f, std::string_view, std::string_view) {
+  if (const auto* t = Take(name)) f = config_detail::ParseBool(Key(name), *t);
+}
+void AssignVisitor::operator()(std::string_view name, std::string& f, std::string_view, std::string_view,
+                               const Choices& c) {
+  if (const auto* t = Take(name)) {
+    if (!c.empty()) config_detail::CheckChoice(Key(name), *t, c);
+    f = *t;
+  }
+}
+
+void BoundsVisitor::operator()(std::string_view name, double& f, std::string_view, std::string_view, const Bounds& b) {
+  config_detail::CheckBounds(Key(name), f, b);
+}
+void BoundsVisitor::operator()(std::string_view name, int& f, std::string_view, std::string_view, const Bounds& b) {
+  config_detail::CheckBounds(Key(name), f, b);
+}
+void BoundsVisitor::operator()(std::string_view name, std::string& f, std::string_view, std::string_view,
+                               const Choices& c) {
+  if (!c.empty()) config_detail::CheckChoice(Key(name), f, c);
+}
+
+void DocVisitor::operator()(std::string_view name, double& f, std::string_view unit, std::string_view doc,
+                            const Bounds& b) {
+  fields.push_back({Key(name), "real", std::string(unit), config_detail::FormatReal(f), b.Describe(), std::string(doc)});
+}
+void DocVisitor::operator()(std::string_view name, int& f, std::string_view unit, std::string_view doc,
+                            const Bounds& b) {
+  fields.push_back({Key(name), "int", std::string(unit), std::to_string(f), b.Describe(), std::string(doc)});
+}
+void DocVisitor::operator()(std::string_view name, bool& f, std::string_view unit, std::string_view doc) {
+  fields.push_back({Key(name), "bool", std::string(unit), f ? "true" : "false", "true|false", std::string(doc)});
+}
+void DocVisitor::operator()(std::string_view name, std::string& f, std::string_view unit, std::string_view doc,
+                            const Choices& c) {
+  std::string allowed;
+  for (const auto& x : c) allowed += (allowed.empty() ? "" : "|") + x;
+  fields.push_back({Key(name), "string", std::string(unit), f, allowed, std::string(doc)});
+}
+
+std::string FieldsToYaml(const std::vector<FieldDoc>& fields) {
+  // Fields arrive grouped by section (declaration order), so emit a new mapping
+  // whenever the section path changes.
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  std::vector<std::string> open;  // current section path
+  for (const auto& f : fields) {
+    std::vector<std::string> parts;
+    std::string::size_type start = 0, dot;
+    while ((dot = f.key.find('.', start)) != std::string::npos) {
+      parts.push_back(f.key.substr(start, dot - start));
+      start = dot + 1;
+    }
+    const std::string leaf = f.key.substr(start);
+    size_t common = 0;
+    while (common < open.size() && common < parts.size() && open[common] == parts[common]) ++common;
+    while (open.size() > common) {
+      out << YAML::EndMap;
+      open.pop_back();
+    }
+    while (open.size() < parts.size()) {
+      out << YAML::Key << parts[open.size()] << YAML::Value << YAML::BeginMap;
+      open.push_back(parts[open.size()]);
+    }
+    out << YAML::Key << leaf << YAML::Value;
+    if (f.type == "string") {
+      out << YAML::DoubleQuoted << f.value;
+    } else {
+      out << f.value;
+    }
+  }
+  while (!open.empty()) {
+    out << YAML::EndMap;
+    open.pop_back();
+  }
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+void FailRule(const std::string& key, double value, const std::string& rule) {
+  throw InputError(key + " = " + config_detail::FormatReal(value) + ": " + rule);
+}
+
+}  // namespace tactip

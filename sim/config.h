@@ -1,0 +1,209 @@
+#pragma once
+// Typed configuration with units, documentation and bounds on every field.
+//
+// A config struct lists its fields once, in a `Visit` member template:
+//
+//   template <class V> void Visit(V& v) {
+//     v("mass_kg", mass_kg, "kg", "Mass of the slider and stimulus.", Bounds::Positive());
+//   }
+//
+// and nested structs with `v.Section("object", object)`. Generic visitors then load
+// YAML, apply `--set key=value` overrides, check bounds, list the documentation and
+// write the fully resolved config back as YAML. Unknown keys are errors.
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace tactip {
+
+/// Thrown for invalid user input (config values, files, command-line arguments); the
+/// message is one line a user can act on.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Allowed interval of a numeric config field; open or closed at either end.
+struct Bounds {
+  double lo = -std::numeric_limits<double>::infinity();  ///< lower limit
+  double hi = std::numeric_limits<double>::infinity();   ///< upper limit
+  bool lo_open = false;                                   ///< true: value must be > lo
+  bool hi_open = false;                                   ///< true: value must be < hi
+
+  /// Any finite value.
+  static Bounds Any() { return {}; }
+  /// value > 0.
+  static Bounds Positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  /// value >= 0.
+  static Bounds NonNegative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  /// lo <= value <= hi.
+  static Bounds Closed(double lo, double hi) { return {lo, hi, false, false}; }
+  /// lo < value <= hi.
+  static Bounds LeftOpen(double lo, double hi) { return {lo, hi, true, false}; }
+  /// lo <= value < hi.
+  static Bounds RightOpen(double lo, double hi) { return {lo, hi, false, true}; }
+
+  /// Empty when `v` is allowed, else the rule it breaks ("must be > 0").
+  std::string Check(double v) const;
+  /// Human-readable interval, e.g. "(0, inf)".
+  std::string Describe() const;
+};
+
+/// Allowed values of a string-valued config field.
+using Choices = std::vector<std::string>;
+
+/// One documented config field, as listed by `tactip config`.
+struct FieldDoc {
+  std::string key;      ///< dotted key, e.g. "rail.retract_speed_mm_s"
+  std::string type;     ///< "real", "int", "bool" or "string"
+  std::string unit;     ///< unit symbol, empty for dimensionless
+  std::string value;    ///< current value as text
+  std::string allowed;  ///< interval or list of choices
+  std::string doc;      ///< what the field means and why the default is what it is
+};
+
+namespace config_detail {
+
+/// Formats a double so that parsing it back yields the same bits.
+std::string FormatReal(double v);
+/// Parses text into a field value; throws InputError naming `key`.
+double ParseReal(const std::string& key, const std::string& text);
+long long ParseInt(const std::string& key, const std::string& text);
+bool ParseBool(const std::string& key, const std::string& text);
+
+/// Prefix-tracking base of all visitors (CRTP: `Derived` is the concrete visitor).
+template <class Derived>
+class PathVisitor {
+ public:
+  /// Visits a nested config struct under "name.".
+  template <class Sub>
+  void Section(std::string_view name, Sub& sub) {
+    const std::string saved = prefix_;
+    prefix_ += std::string(name) + ".";
+    sub.Visit(static_cast<Derived&>(*this));
+    prefix_ = saved;
+  }
+  /// Full dotted key of a field in the current section.
+  std::string Key(std::string_view name) const { return prefix_ + std::string(name); }
+
+ protected:
+  std::string prefix_;
+};
+
+/// Checks a numeric value against its bounds; throws InputError
+/// "key = value: must be ...".
+void CheckBounds(const std::string& key, double v, const Bounds& b);
+/// Checks a string value against its choices.
+void CheckChoice(const std::string& key, const std::string& v, const Choices& c);
+
+}  // namespace config_detail
+
+/// Flat map from dotted key to scalar text; the common currency of YAML files and
+/// `--set` overrides.
+using FlatConfig = std::map<std::string, std::string>;
+
+/// Parses YAML text into a FlatConfig; throws InputError on malformed YAML, naming
+/// `source` and the line.
+FlatConfig FlattenYaml(const std::string& yaml_text, const std::string& source);
+/// Reads and flattens a YAML file; throws InputError if it is missing or malformed.
+FlatConfig FlattenYamlFile(const std::string& path);
+/// Parses "key=value"; throws InputError if there is no '=' or the key is empty.
+std::pair<std::string, std::string> ParseAssignment(const std::string& text);
+
+/// Visitor that assigns values from a FlatConfig, erasing each key it consumes.
+class AssignVisitor : public config_detail::PathVisitor<AssignVisitor> {
+ public:
+  explicit AssignVisitor(FlatConfig& values) : values_(values) {}
+  void operator()(std::string_view name, double& f, std::string_view, std::string_view, const Bounds&);
+  void operator()(std::string_view name, int& f, std::string_view, std::string_view, const Bounds&);
+  void operator()(std::string_view name, bool& f, std::string_view, std::string_view);
+  void operator()(std::string_view name, std::string& f, std::string_view, std::string_view, const Choices&);
+
+ private:
+  const std::string* Take(std::string_view name);
+  FlatConfig& values_;
+  std::string taken_;
+};
+
+/// Visitor that checks every field against its bounds; throws on the first violation.
+class BoundsVisitor : public config_detail::PathVisitor<BoundsVisitor> {
+ public:
+  void operator()(std::string_view name, double& f, std::string_view, std::string_view, const Bounds& b);
+  void operator()(std::string_view name, int& f, std::string_view, std::string_view, const Bounds& b);
+  void operator()(std::string_view, bool&, std::string_view, std::string_view) {}
+  void operator()(std::string_view name, std::string& f, std::string_view, std::string_view, const Choices& c);
+
+ private:
+};
+
+/// Visitor that lists every field with its documentation.
+class DocVisitor : public config_detail::PathVisitor<DocVisitor> {
+ public:
+  void operator()(std::string_view name, double& f, std::string_view unit, std::string_view doc, const Bounds& b);
+  void operator()(std::string_view name, int& f, std::string_view unit, std::string_view doc, const Bounds& b);
+  void operator()(std::string_view name, bool& f, std::string_view unit, std::string_view doc);
+  void operator()(std::string_view name, std::string& f, std::string_view unit, std::string_view doc, const Choices& c);
+  std::vector<FieldDoc> fields;  ///< collected in declaration order
+
+ private:
+};
+
+/// Applies `values` to `cfg`; throws InputError naming the first unknown key.
+template <class Config>
+void ApplyFlat(Config& cfg, FlatConfig values) {
+  AssignVisitor v(values);
+  cfg.Visit(v);
+  if (!values.empty()) {
+    throw InputError("unknown config key '" + values.begin()->first + "'");
+  }
+}
+
+/// Checks bounds of every field, then the config's own cross-field rules.
+template <class Config>
+void ValidateConfig(Config& cfg) {
+  BoundsVisitor v;
+  cfg.Visit(v);
+  cfg.ValidateRules();
+}
+
+/// Lists every field of `cfg` with unit, bounds and documentation.
+template <class Config>
+std::vector<FieldDoc> DescribeConfig(Config cfg) {
+  DocVisitor v;
+  cfg.Visit(v);
+  return v.fields;
+}
+
+/// Writes the fully resolved config as nested YAML (every field, current values).
+std::string FieldsToYaml(const std::vector<FieldDoc>& fields);
+
+/// The resolved config as YAML text, as stored in datasets.
+template <class Config>
+std::string ConfigToYaml(const Config& cfg) {
+  return FieldsToYaml(DescribeConfig(cfg));
+}
+
+/// Loads a config: defaults, then the YAML file (if `yaml_path` is non-empty), then the
+/// `key=value` overrides in order; validates the result. Throws InputError.
+template <class Config>
+Config LoadConfig(const std::string& yaml_path, const std::vector<std::string>& overrides,
+                  Config cfg = Config{}) {
+  if (!yaml_path.empty()) ApplyFlat(cfg, FlattenYamlFile(yaml_path));
+  for (const auto& o : overrides) {
+    auto [key, value] = ParseAssignment(o);
+    ApplyFlat(cfg, FlatConfig{{key, value}});
+  }
+  ValidateConfig(cfg);
+  return cfg;
+}
+
+/// Throws InputError "key = value: reason" for cross-field rules in ValidateRules().
+[[noreturn]] void FailRule(const std::string& key, double value, const std::string& rule);
+
+}  // namespace tactip

@@ -1,0 +1,15 @@
+#pragma once
+// Atomic file output: write to a temporary file beside the target, then rename.
+
+#include <string>
+
+namespace tactip {
+
+/// Writes `text` to `path` atomically (temp file in the same folder + rename); throws
+/// InputError naming the path if it cannot be written. A failure leaves no file.
+void WriteFileAtomic(const std::string& path, const std::string& text);
+
+/// A unique temporary name beside `path` ("path.tmp.<pid>.<n>").
+std::string TempPathFor(const std::string& path);
+
+}  // namespace tactip

@@ -1,0 +1,237 @@
+#include "sim/simulation.h"
+
+#include <mujoco/mujoco.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+
+#include <fmt/format.h>
+
+namespace tactip {
+
+static_assert(mjNWARNING == 8, "warning table size");
+
+namespace {
+
+// MuJoCo's default warning handler prints to stdout and appends to MUJOCO_LOG.TXT; the
+// counters in mjData are checked after every step instead.
+void SilentWarning(const char*) {}
+
+// MuJoCo's errors are fatal to the process; say so on one line and exit non-zero.
+void FatalError(const char* msg) {
+  std::fprintf(stderr, "tactip: MuJoCo internal error: %s\n", msg);
+  std::exit(3);
+}
+
+void InstallHandlers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    mju_user_warning = SilentWarning;
+    mju_user_error = FatalError;
+  });
+}
+
+std::mutex& LoaderMutex() {
+  static std::mutex mu;
+  return mu;
+}
+
+int NameToId(const mjModel* m, int type, const std::string& name, const char* what) {
+  const int id = mj_name2id(m, type, name.c_str());
+  if (id < 0) throw ModelError(fmt::format("model has no {} named '{}'", what, name));
+  return id;
+}
+
+const char* WarningName(int i) {
+  switch (i) {
+    case mjWARN_INERTIA: return "INERTIA (near-singular inertia matrix)";
+    case mjWARN_CONTACTFULL: return "CONTACTFULL (contact buffer full: contacts were dropped)";
+    case mjWARN_CNSTRFULL: return "CNSTRFULL (constraint buffer full: constraints were dropped)";
+    case mjWARN_VGEOMFULL: return "VGEOMFULL";
+    case mjWARN_BADQPOS: return "BADQPOS (NaN or huge position; MuJoCo reset the state)";
+    case mjWARN_BADQVEL: return "BADQVEL (NaN or huge velocity; MuJoCo reset the state)";
+    case mjWARN_BADQACC: return "BADQACC (NaN or huge acceleration; MuJoCo reset the state)";
+    case mjWARN_BADCTRL: return "BADCTRL (NaN control)";
+    default: return "unknown";
+  }
+}
+
+}  // namespace
+
+void MjModelDeleter::operator()(mjModel_* m) const { mj_deleteModel(m); }
+void MjDataDeleter::operator()(mjData_* d) const { mj_deleteData(d); }
+
+CompiledModel CompiledModel::FromXml(const std::string& xml) {
+  InstallHandlers();
+  // Load from an in-memory virtual file; the loader is serialised by a global lock.
+  auto vfs = std::make_unique<mjVFS>();
+  std::lock_guard<std::mutex> lock(LoaderMutex());
+  mj_defaultVFS(vfs.get());
+  const char* fname = "tactip_scene.xml";
+  if (mj_makeEmptyFileVFS(vfs.get(), fname, static_cast<int>(xml.size())) != 0) {
+    throw ModelError("cannot allocate the in-memory MJCF file");
+  }
+  const int idx = mj_findFileVFS(vfs.get(), fname);
+  std::memcpy(vfs->filedata[idx], xml.data(), xml.size());
+  char err[1000] = {0};
+  mjModel* m = mj_loadXML(fname, vfs.get(), err, sizeof(err));
+  mj_deleteVFS(vfs.get());
+  if (!m) throw ModelError(fmt::format("MJCF does not compile: {}", err));
+  return CompiledModel(m);
+}
+
+CompiledModel CompiledModel::Copy() const { return CompiledModel(mj_copyModel(nullptr, model_.get())); }
+
+int CompiledModel::BodyId(const std::string& n) const { return NameToId(model_.get(), mjOBJ_BODY, n, "body"); }
+int CompiledModel::JointId(const std::string& n) const { return NameToId(model_.get(), mjOBJ_JOINT, n, "joint"); }
+int CompiledModel::GeomId(const std::string& n) const { return NameToId(model_.get(), mjOBJ_GEOM, n, "geom"); }
+int CompiledModel::SiteId(const std::string& n) const { return NameToId(model_.get(), mjOBJ_SITE, n, "site"); }
+int CompiledModel::ActuatorId(const std::string& n) const {
+  return NameToId(model_.get(), mjOBJ_ACTUATOR, n, "actuator");
+}
+int CompiledModel::JointQposAdr(int j) const { return model_->jnt_qposadr[j]; }
+int CompiledModel::JointDofAdr(int j) const { return model_->jnt_dofadr[j]; }
+void CompiledModel::SetGeomFriction(int g, double mu) { model_->geom_friction[3 * g] = mu; }
+double CompiledModel::GeomFriction(int g) const { return model_->geom_friction[3 * g]; }
+double CompiledModel::timestep() const { return model_->opt.timestep; }
+double CompiledModel::gravity() const { return mju_norm3(model_->opt.gravity); }
+int CompiledModel::nv() const { return model_->nv; }
+int CompiledModel::ngeom() const { return model_->ngeom; }
+
+Simulation::Simulation(const CompiledModel& model)
+    : model_(model),
+      data_(mj_makeData(model.raw())),
+      jac_a_(3 * static_cast<size_t>(model.nv())),
+      jac_b_(3 * static_cast<size_t>(model.nv())),
+      efc_vel_(static_cast<size_t>(model.raw()->njmax)) {
+  if (!data_) throw ModelError("cannot allocate mjData");
+}
+
+Simulation::~Simulation() = default;
+
+double Simulation::time() const { return data_->time; }
+
+void Simulation::SetControl(int actuator, double value) { data_->ctrl[actuator] = value; }
+
+void Simulation::Forward() {
+  mj_forward(model_.raw(), data_.get());
+  CheckWarnings();
+}
+
+void Simulation::Step() {
+  // Split step: positions/velocities, then forces and integration (Euler), so that
+  // contact Jacobians from step1 match the configuration the forces act in.
+  mj_step1(model_.raw(), data_.get());
+  mj_step2(model_.raw(), data_.get());
+  CheckWarnings();
+}
+
+void Simulation::CheckWarnings() {
+  const mjData* d = data_.get();
+  for (int i = 0; i < mjNWARNING; ++i) {
+    if (d->warning[i].number == warn_seen_[i]) continue;
+    warn_seen_[i] = d->warning[i].number;
+    if (i == mjWARN_VGEOMFULL) continue;  // rendering only
+    std::string hint;
+    if (i == mjWARN_CONTACTFULL || i == mjWARN_CNSTRFULL) {
+      hint = "; the scene's contact budget is too small for this configuration";
+    } else {
+      hint = fmt::format("; reduce sim.timestep_s (now {} s) or the stiffest spring", model_.timestep());
+    }
+    throw SimulationError(
+        fmt::format("simulation stopped at t = {:.4f} s: MuJoCo warning {}{}", d->time, WarningName(i), hint));
+  }
+}
+
+double Simulation::Qpos(int adr) const { return data_->qpos[adr]; }
+double Simulation::Qvel(int dof) const { return data_->qvel[dof]; }
+
+std::array<double, 3> Simulation::SitePos(int s) const {
+  const double* p = data_->site_xpos + 3 * s;
+  return {p[0], p[1], p[2]};
+}
+
+std::array<double, 3> Simulation::BodyPos(int b) const {
+  const double* p = data_->xpos + 3 * b;
+  return {p[0], p[1], p[2]};
+}
+
+std::array<double, 9> Simulation::BodyRot(int b) const {
+  std::array<double, 9> r{};
+  std::memcpy(r.data(), data_->xmat + 9 * b, sizeof(double) * 9);
+  return r;
+}
+
+int Simulation::ContactCount() const { return data_->ncon; }
+
+int Simulation::WarningCount() const {
+  int n = 0;
+  for (int i = 0; i < mjNWARNING; ++i) n += data_->warning[i].number;
+  return n;
+}
+
+void Simulation::ReadContacts(const std::vector<int>& slot_of_geom, std::vector<GeomContact>& out) {
+  const mjModel* m = model_.raw();
+  mjData* d = data_.get();
+  for (auto& c : out) c = GeomContact{};
+  const int nv = m->nv;
+  bool have_efc_vel = false;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& con = d->contact[i];
+    if (con.exclude) continue;
+    // Which side of the contact is tracked; the normal points from geom1 to geom2.
+    int slot = slot_of_geom[con.geom2];
+    double sign = 1.0;
+    int other = con.geom1;
+    int self = con.geom2;
+    if (slot < 0) {
+      slot = slot_of_geom[con.geom1];
+      sign = -1.0;
+      other = con.geom2;
+      self = con.geom1;
+    }
+    if (slot < 0) continue;
+    // Contact force in the contact frame (normal, t1, t2) -> world force on the tracked geom.
+    mjtNum f6[6];
+    mj_contactForce(m, d, i, f6);
+    if (f6[0] <= 0.0) continue;
+    GeomContact& gc = out[slot];
+    gc.in_contact = true;
+    gc.normal_N += f6[0];
+    for (int k = 0; k < 3; ++k) {
+      const double fw = f6[0] * con.frame[k] + f6[1] * con.frame[3 + k] + f6[2] * con.frame[6 + k];
+      gc.force_world[k] += sign * fw;
+      gc.normal_world[k] = sign * con.frame[k];
+    }
+    // Tangential relative velocity at the contact point. Elliptic cones: rows 1 and 2
+    // of the contact are the tangent directions, so J * qvel gives it directly.
+    double vt2 = 0.0;
+    if (m->opt.cone == mjCONE_ELLIPTIC && con.dim >= 3) {
+      if (!have_efc_vel) {
+        mj_mulJacVec(m, d, efc_vel_.data(), d->qvel);
+        have_efc_vel = true;
+      }
+      const double v1 = efc_vel_[con.efc_address + 1], v2 = efc_vel_[con.efc_address + 2];
+      vt2 = v1 * v1 + v2 * v2;
+    } else {
+      // Pyramidal cones: difference of the two bodies' point velocities.
+      mj_jac(m, d, jac_a_.data(), nullptr, con.pos, m->geom_bodyid[self]);
+      mj_jac(m, d, jac_b_.data(), nullptr, con.pos, m->geom_bodyid[other]);
+      double v[3] = {0, 0, 0};
+      for (int r = 0; r < 3; ++r) {
+        for (int j = 0; j < nv; ++j) v[r] += (jac_a_[r * nv + j] - jac_b_[r * nv + j]) * d->qvel[j];
+      }
+      const double vn = v[0] * con.frame[0] + v[1] * con.frame[1] + v[2] * con.frame[2];
+      for (int k = 0; k < 3; ++k) {
+        const double t = v[k] - vn * con.frame[k];
+        vt2 += t * t;
+      }
+    }
+    gc.slip_speed_m_s = std::max(gc.slip_speed_m_s, std::sqrt(vt2));
+  }
+}
+
+}  // namespace tactip

@@ -1,0 +1,130 @@
+#pragma once
+// Ownership of MuJoCo models and data, fixed-step stepping with stability checks, and
+// contact read-out. This folder is the only code that includes <mujoco/mujoco.h>.
+
+#include <array>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+struct mjModel_;
+struct mjData_;
+
+namespace tactip {
+
+/// Thrown when an MJCF text does not compile or a named element is missing.
+class ModelError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Thrown when a run becomes numerically invalid (NaN, reset state, dropped contacts);
+/// the message names the warning, the simulated time and what to change.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Deleters so MuJoCo structs live in std::unique_ptr.
+struct MjModelDeleter {
+  void operator()(mjModel_* m) const;
+};
+struct MjDataDeleter {
+  void operator()(mjData_* d) const;
+};
+
+/// A compiled MuJoCo model. One instance may be read by many Simulations (each with
+/// its own mjData); per-run variations use Copy() and the setters.
+class CompiledModel {
+ public:
+  /// Compiles MJCF text; throws ModelError with MuJoCo's message. Serialised by a lock
+  /// because MuJoCo's XML loader is not thread-safe.
+  static CompiledModel FromXml(const std::string& xml);
+  /// Deep copy, for per-run parameter changes.
+  CompiledModel Copy() const;
+
+  /// Ids by name; throw ModelError naming the missing element.
+  int BodyId(const std::string& name) const;
+  int JointId(const std::string& name) const;
+  int GeomId(const std::string& name) const;
+  int SiteId(const std::string& name) const;
+  int ActuatorId(const std::string& name) const;
+  /// Index of a joint's first qpos / first dof.
+  int JointQposAdr(int joint) const;
+  int JointDofAdr(int joint) const;
+
+  /// Sets the sliding friction coefficient of one geom (the contact uses the max of the pair).
+  void SetGeomFriction(int geom, double mu);
+  /// Sliding friction coefficient of one geom.
+  double GeomFriction(int geom) const;
+  /// Physics timestep in seconds.
+  double timestep() const;
+  /// Gravity magnitude in m/s^2.
+  double gravity() const;
+  int nv() const;
+  int ngeom() const;
+
+  /// The raw model, for code inside sim/.
+  const mjModel_* raw() const { return model_.get(); }
+
+ private:
+  explicit CompiledModel(mjModel_* m) : model_(m) {}
+  std::unique_ptr<mjModel_, MjModelDeleter> model_;
+};
+
+/// Contact state of one tracked geom at the current step, forces on that geom.
+struct GeomContact {
+  bool in_contact = false;                ///< at least one active contact
+  double normal_N = 0.0;                  ///< summed normal force magnitude
+  std::array<double, 3> force_world{};    ///< total contact force on the geom, world frame
+  std::array<double, 3> normal_world{};   ///< contact normal pointing into the geom
+  double slip_speed_m_s = 0.0;            ///< tangential relative speed at the contact point
+};
+
+/// One simulation instance: mjData plus the stepping loop. The CompiledModel must
+/// outlive it. Not thread-safe; use one per thread.
+class Simulation {
+ public:
+  explicit Simulation(const CompiledModel& model);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// Simulated time in seconds.
+  double time() const;
+  /// Sets one actuator's control input.
+  void SetControl(int actuator, double value);
+  /// Advances one timestep; throws SimulationError on BADQACC/BADQPOS/BADQVEL (NaN or
+  /// reset state), CONTACTFULL or CNSTRFULL (silently dropped constraints).
+  void Step();
+  /// Runs forward kinematics and contacts without advancing time (for the initial state).
+  void Forward();
+
+  double Qpos(int adr) const;
+  double Qvel(int dof) const;
+  /// World position of a site / body origin (metres).
+  std::array<double, 3> SitePos(int site) const;
+  std::array<double, 3> BodyPos(int body) const;
+  /// World rotation of a body, row-major 3x3.
+  std::array<double, 9> BodyRot(int body) const;
+
+  /// Reads the contacts of the tracked geoms. `slot_of_geom` maps geom id -> output
+  /// slot (or -1); `out` must have one entry per slot. Slip speed uses the velocity
+  /// after the last step at the configuration the contacts were detected in.
+  void ReadContacts(const std::vector<int>& slot_of_geom, std::vector<GeomContact>& out);
+  /// Number of active contacts.
+  int ContactCount() const;
+  /// Total number of warnings MuJoCo has raised in this run (all kinds).
+  int WarningCount() const;
+
+ private:
+  void CheckWarnings();
+  const CompiledModel& model_;
+  std::unique_ptr<mjData_, MjDataDeleter> data_;
+  std::vector<double> jac_a_, jac_b_;  // 3 x nv scratch for contact-point Jacobians
+  std::vector<double> efc_vel_;        // constraint-space velocity J * qvel (njmax)
+  std::array<int, 8> warn_seen_{};
+};
+
+}  // namespace tactip

@@ -1,0 +1,110 @@
+#include "models/skin.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "models/rail_rig.h"
+#include "sim/simulation.h"
+
+namespace tactip {
+namespace {
+
+constexpr double kTol = 1e-9;
+
+TEST(SkinTest, DefaultsAreValid) {
+  SkinConfig s;
+  EXPECT_NO_THROW(ValidateConfig(s));
+  ContactConfig c;
+  EXPECT_NO_THROW(ValidateConfig(c));
+}
+
+TEST(SkinTest, LatticeHas127PinsInSevenHexRings) {
+  const PinLattice lat = PinLattice::Build(SkinConfig{});
+  ASSERT_EQ(lat.size(), 127u);
+  std::map<int, int> per_ring;
+  for (const auto& p : lat.pins) per_ring[p.ring]++;
+  EXPECT_EQ(per_ring[0], 1);
+  for (int r = 1; r <= 6; ++r) EXPECT_EQ(per_ring[r], 6 * r) << "ring " << r;
+  // Centre pin first, on the axis.
+  EXPECT_EQ(lat.pins[0].ring, 0);
+  EXPECT_NEAR(lat.pins[0].normal[0], 1.0, kTol);
+}
+
+TEST(SkinTest, NeighboursArePitchApartAlongTheDome) {
+  SkinConfig cfg;
+  const PinLattice lat = PinLattice::Build(cfg);
+  // Hexagonal patch of radius r: 3 r (3 r + 1) edges.
+  EXPECT_EQ(lat.neighbours.size(), static_cast<size_t>(3 * 6 * (3 * 6 + 1)));
+  for (const auto& p : lat.pins) {
+    const auto& n = p.normal;
+    EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, kTol);
+  }
+  // The centre pin's neighbours sit one pitch of arc from the apex.
+  for (const auto& e : lat.neighbours) {
+    if (e[0] != 0) continue;
+    EXPECT_NEAR(lat.pins[e[1]].polar_rad * cfg.radius_mm, cfg.pitch_mm, 1e-9);
+  }
+}
+
+TEST(SkinTest, LatticeThatDoesNotFitIsRejected) {
+  SkinConfig cfg;
+  cfg.rings = 11;  // 33 mm of arc on a 20 mm dome is past the equator
+  try {
+    ValidateConfig(cfg);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("skin.rings = 11: lattice reaches"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SkinTest, MechanicsFollowMaterialFormulas) {
+  SkinConfig cfg;
+  const SkinMechanics m = SkinMechanics::From(cfg, 127);
+  const double area = std::sqrt(3.0) / 2.0 * 9e-6;
+  EXPECT_NEAR(m.k_normal_N_m, 100e3 * area / 0.02, 1e-9);
+  EXPECT_NEAR(m.k_shear_N_m, m.k_normal_N_m / 3.0, 1e-9);
+  EXPECT_NEAR(m.k_bend_N_m, 1e6 * 1e-9 / (12.0 * 0.75) / 9e-6, 1e-9);
+  // Thickness enters the coupling as t^3 and the membrane stiffness as t.
+  SkinConfig thick = cfg;
+  thick.thickness_mm = 2.0;
+  const SkinMechanics t2 = SkinMechanics::From(thick, 127);
+  EXPECT_NEAR(t2.k_bend_N_m / m.k_bend_N_m, 8.0, 1e-9);
+  EXPECT_NEAR(t2.membrane_N_m / m.membrane_N_m, 2.0, 1e-9);
+}
+
+TEST(SkinTest, RailSceneCompilesWithOnlyReachablePinsCollidable) {
+  RailSceneSpec spec;
+  spec.max_depth_m = 3.1e-3;
+  const BuiltScene flat = BuildRailScene(spec);
+  EXPECT_EQ(flat.n_pins, 127);
+  EXPECT_GT(flat.n_collidable, 37);   // at least the pins inside the 3 mm contact
+  EXPECT_LT(flat.n_collidable, 127);  // the outer rings cannot reach the plate
+  const CompiledModel m = CompiledModel::FromXml(flat.xml);
+  EXPECT_NO_THROW(m.GeomId(SkinNames::PinGeom(0)));
+  EXPECT_THROW(m.GeomId(SkinNames::PinGeom(126)), ModelError);
+  // A tighter curvature reaches fewer pins.
+  spec.rail.stimulus = "curved20";
+  const BuiltScene curved = BuildRailScene(spec);
+  EXPECT_LT(curved.n_collidable, flat.n_collidable);
+  EXPECT_NO_THROW(CompiledModel::FromXml(curved.xml));
+}
+
+TEST(SkinTest, CulledPinsReallyCannotTouch) {
+  // Pins without a contact geom must lie farther from the plate than the deepest press.
+  SkinConfig skin;
+  RailConfig rail;
+  const PinLattice lat = PinLattice::Build(skin);
+  const double depth = 3e-3;
+  const auto coll = RailCollidablePins(skin, lat, rail, depth);
+  for (const auto& p : lat.pins) {
+    const double sag = skin.radius_mm * 1e-3 * (1.0 - p.normal[0]);  // apex-to-pin drop along the axis
+    if (!coll[p.index]) {
+      EXPECT_GT(sag, depth) << "pin " << p.index;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tactip

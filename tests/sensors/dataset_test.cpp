@@ -1,0 +1,374 @@
+#include "sensors/dataset.h"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "sim/config.h"
+
+namespace tactip {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Fresh empty folder per test, removed afterwards.
+class DatasetTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("tactip_dataset_test_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Path of `name` inside the test folder.
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+
+  /// Names of all entries in the test folder.
+  std::vector<std::string> Entries() const {
+    std::vector<std::string> out;
+    for (const auto& e : fs::directory_iterator(dir_)) out.push_back(e.path().filename().string());
+    return out;
+  }
+
+  fs::path dir_;
+};
+
+/// Header with non-ASCII and multi-line text and a seed needing all 64 bits.
+DatasetHeader MakeHeader(std::uint64_t seed = 0xFEDCBA9876543210ULL) {
+  DatasetHeader h;
+  h.tactip_version = "0.1.0";
+  h.scenario = "rail";
+  h.seed = seed;
+  h.config_yaml = "rail:\n  retract_speed_mm_s: 5\n  note: \"µ-slip ✓\"\n";
+  return h;
+}
+
+/// Synthetic run with T frames and N pins; every element distinct where possible.
+RunRecord MakeRun(int index, int t, int n) {
+  RunRecord r;
+  r.index = index;
+  r.n_pins = n;
+  const auto tn = static_cast<size_t>(t * n);
+  for (int i = 0; i < t; ++i) {
+    r.time.push_back(0.01 * i + index);
+    r.gross_slip.push_back(static_cast<std::uint8_t>(i % 2));
+    r.object_height_m.push_back(0.1 - 1e-4 * i);
+  }
+  for (size_t k = 0; k < tn * 2; ++k) r.pos_px.push_back(100.25f + 0.5f * static_cast<float>(k));
+  for (size_t k = 0; k < tn * 3; ++k) r.pos_m.push_back(1e-3f * static_cast<float>(k) - 0.004f);
+  for (size_t k = 0; k < tn * 2; ++k) r.tangential_N.push_back(-0.01f * static_cast<float>(k));
+  for (size_t k = 0; k < tn; ++k) {
+    r.valid.push_back(k % 5 == 0 ? 0 : 1);
+    r.pin_slip.push_back(k % 3 == 0 ? 1 : 0);
+    r.pin_contact.push_back(k % 2 == 0 ? 1 : 0);
+    r.normal_N.push_back(0.02f * static_cast<float>(k));
+  }
+  r.attrs["friction_coefficient"] = 0.6;
+  r.attrs["gross_slip_onset_s"] = 0.123456789;
+  r.attrs["object_fall_s"] = std::numeric_limits<double>::quiet_NaN();
+  r.text_attrs["stimulus"] = "flat";
+  r.text_attrs["comment"] = "";
+  return r;
+}
+
+/// Writes `runs` to `path` and commits.
+void WriteDataset(const std::string& path, const std::vector<RunRecord>& runs, const DatasetHeader& header) {
+  DatasetWriter w(path, header);
+  for (const auto& r : runs) w.WriteRun(r);
+  w.Commit();
+}
+
+/// Whole file as bytes.
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// Message of the InputError thrown by `f` ("" if none was thrown).
+template <class F>
+std::string InputErrorOf(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(DatasetNameTest, RunGroupNamePadsToFourDigits) {
+  EXPECT_EQ(RunGroupName(7), "run_0007");
+  EXPECT_EQ(RunGroupName(0), "run_0000");
+  EXPECT_EQ(RunGroupName(12345), "run_12345");
+}
+
+TEST_F(DatasetTest, RoundTripPreservesEveryArrayAndAttribute) {
+  const std::string path = Path("x.h5");
+  const RunRecord a = MakeRun(3, 5, 3);
+  const RunRecord b = MakeRun(1, 2, 1);
+  WriteDataset(path, {a, b}, MakeHeader());
+
+  const DatasetReader reader(path);
+  EXPECT_EQ(reader.header().tactip_version, "0.1.0");
+  EXPECT_EQ(reader.header().scenario, "rail");
+  EXPECT_EQ(reader.header().seed, 0xFEDCBA9876543210ULL);
+  EXPECT_EQ(reader.header().config_yaml, MakeHeader().config_yaml);
+  EXPECT_EQ(reader.run_indices(), (std::vector<int>{1, 3}));
+
+  const RunRecord r = reader.ReadRun(3);
+  EXPECT_NO_THROW(r.CheckShapes());
+  EXPECT_EQ(r.index, 3);
+  EXPECT_EQ(r.n_pins, 3);
+  EXPECT_EQ(r.frames(), 5u);
+  EXPECT_EQ(r.time, a.time);
+  EXPECT_EQ(r.pos_px, a.pos_px);
+  EXPECT_EQ(r.valid, a.valid);
+  EXPECT_EQ(r.pos_m, a.pos_m);
+  EXPECT_EQ(r.gross_slip, a.gross_slip);
+  EXPECT_EQ(r.pin_slip, a.pin_slip);
+  EXPECT_EQ(r.pin_contact, a.pin_contact);
+  EXPECT_EQ(r.normal_N, a.normal_N);
+  EXPECT_EQ(r.tangential_N, a.tangential_N);
+  EXPECT_EQ(r.object_height_m, a.object_height_m);
+  ASSERT_EQ(r.attrs.size(), 3u);
+  EXPECT_EQ(r.attrs.at("friction_coefficient"), 0.6);
+  EXPECT_EQ(r.attrs.at("gross_slip_onset_s"), 0.123456789);
+  EXPECT_TRUE(std::isnan(r.attrs.at("object_fall_s")));
+  EXPECT_EQ(r.text_attrs, a.text_attrs);
+
+  // A single-pin run round-trips too.
+  const RunRecord one = reader.ReadRun(1);
+  EXPECT_EQ(one.n_pins, 1);
+  EXPECT_EQ(one.pos_m, b.pos_m);
+  EXPECT_EQ(one.tangential_N, b.tangential_N);
+}
+
+TEST_F(DatasetTest, SummaryReadsAttributesAndFrameCountOnly) {
+  const std::string path = Path("x.h5");
+  WriteDataset(path, {MakeRun(0, 5, 3)}, MakeHeader());
+  const RunRecord s = DatasetReader(path).ReadRunSummary(0);
+  EXPECT_EQ(s.frames(), 5u);
+  EXPECT_EQ(s.n_pins, 3);
+  EXPECT_EQ(s.attrs.at("friction_coefficient"), 0.6);
+  EXPECT_EQ(s.text_attrs.at("stimulus"), "flat");
+  EXPECT_TRUE(s.pos_px.empty());
+  EXPECT_TRUE(s.normal_N.empty());
+}
+
+TEST_F(DatasetTest, FileFollowsTheDocumentedSchema) {
+  const std::string path = Path("x.h5");
+  WriteDataset(path, {MakeRun(2, 5, 3)}, MakeHeader());
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+
+  struct Expect {
+    const char* path;
+    hid_t type;
+    std::vector<hsize_t> shape;
+    const char* units;
+  };
+  const std::vector<Expect> expected = {
+      {"/runs/run_0002/time", H5T_IEEE_F64LE, {5}, "s"},
+      {"/runs/run_0002/pins/pos_px", H5T_IEEE_F32LE, {5, 3, 2}, "px"},
+      {"/runs/run_0002/pins/valid", H5T_STD_U8LE, {5, 3}, "1"},
+      {"/runs/run_0002/pins/pos_m", H5T_IEEE_F32LE, {5, 3, 3}, "m"},
+      {"/runs/run_0002/labels/gross_slip", H5T_STD_U8LE, {5}, "1"},
+      {"/runs/run_0002/labels/pin_slip", H5T_STD_U8LE, {5, 3}, "1"},
+      {"/runs/run_0002/labels/pin_contact", H5T_STD_U8LE, {5, 3}, "1"},
+      {"/runs/run_0002/contact/normal_N", H5T_IEEE_F32LE, {5, 3}, "N"},
+      {"/runs/run_0002/contact/tangential_N", H5T_IEEE_F32LE, {5, 3, 2}, "N"},
+      {"/runs/run_0002/object/height_m", H5T_IEEE_F64LE, {5}, "m"},
+  };
+  for (const auto& e : expected) {
+    SCOPED_TRACE(e.path);
+    const hid_t d = H5Dopen2(file, e.path, H5P_DEFAULT);
+    ASSERT_GE(d, 0);
+    // Element type and shape.
+    const hid_t t = H5Dget_type(d);
+    EXPECT_GT(H5Tequal(t, e.type), 0);
+    H5Tclose(t);
+    const hid_t s = H5Dget_space(d);
+    std::vector<hsize_t> shape(static_cast<size_t>(H5Sget_simple_extent_ndims(s)));
+    H5Sget_simple_extent_dims(s, shape.data(), nullptr);
+    EXPECT_EQ(shape, e.shape);
+    H5Sclose(s);
+    // Layout: pin-axis arrays chunked by whole frames and deflated.
+    const hid_t dcpl = H5Dget_create_plist(d);
+    if (e.shape.size() > 1) {
+      EXPECT_EQ(H5Pget_layout(dcpl), H5D_CHUNKED);
+      std::vector<hsize_t> chunk(e.shape.size());
+      H5Pget_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data());
+      EXPECT_EQ(chunk, e.shape);  // T = 5 < 256
+      unsigned flags = 0;
+      size_t n_values = 1;
+      unsigned level = 0;
+      EXPECT_GE(H5Pget_filter_by_id2(dcpl, H5Z_FILTER_DEFLATE, &flags, &n_values, &level, 0, nullptr, nullptr), 0);
+      EXPECT_EQ(level, 4u);
+    }
+    H5Pclose(dcpl);
+    // "units" is a variable-length UTF-8 string (h5py reads it as str).
+    const hid_t a = H5Aopen(d, "units", H5P_DEFAULT);
+    ASSERT_GE(a, 0);
+    const hid_t at = H5Aget_type(a);
+    EXPECT_GT(H5Tis_variable_str(at), 0);
+    EXPECT_EQ(H5Tget_cset(at), H5T_CSET_UTF8);
+    char* units = nullptr;
+    ASSERT_GE(H5Aread(a, at, &units), 0);
+    EXPECT_STREQ(units, e.units);
+    H5free_memory(units);
+    H5Tclose(at);
+    H5Aclose(a);
+    H5Dclose(d);
+  }
+  // Root seed is uint64; run attributes are float64.
+  const hid_t seed = H5Aopen(file, "seed", H5P_DEFAULT);
+  const hid_t seed_type = H5Aget_type(seed);
+  EXPECT_GT(H5Tequal(seed_type, H5T_STD_U64LE), 0);
+  H5Tclose(seed_type);
+  H5Aclose(seed);
+  const hid_t mu = H5Aopen_by_name(file, "/runs/run_0002", "friction_coefficient", H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t mu_type = H5Aget_type(mu);
+  EXPECT_GT(H5Tequal(mu_type, H5T_IEEE_F64LE), 0);
+  H5Tclose(mu_type);
+  H5Aclose(mu);
+  H5Fclose(file);
+}
+
+TEST_F(DatasetTest, IdenticalInputGivesByteIdenticalFiles) {
+  const std::vector<RunRecord> runs = {MakeRun(0, 5, 3), MakeRun(1, 300, 4)};
+  WriteDataset(Path("a.h5"), runs, MakeHeader());
+  // HDF5 timestamps have 1 s resolution: make sure they would differ if stored.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  WriteDataset(Path("b.h5"), runs, MakeHeader());
+  const std::string a = Slurp(Path("a.h5"));
+  const std::string b = Slurp(Path("b.h5"));
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << "files differ (" << a.size() << " vs " << b.size() << " bytes)";
+}
+
+TEST_F(DatasetTest, UncommittedWriterLeavesNoFiles) {
+  const std::string path = Path("x.h5");
+  std::string temp;
+  {
+    DatasetWriter w(path, MakeHeader());
+    w.WriteRun(MakeRun(0, 5, 3));
+    temp = w.temp_path();
+    EXPECT_TRUE(fs::exists(temp));
+    EXPECT_EQ(fs::path(temp).parent_path(), dir_);
+    EXPECT_FALSE(fs::exists(path));
+  }
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(temp));
+  EXPECT_TRUE(Entries().empty());
+}
+
+TEST_F(DatasetTest, CommitReplacesAnExistingFile) {
+  const std::string path = Path("x.h5");
+  std::ofstream(path) << "old contents\n";
+  WriteDataset(path, {MakeRun(0, 5, 3)}, MakeHeader(1));
+  EXPECT_EQ(DatasetReader(path).header().seed, 1u);
+  WriteDataset(path, {MakeRun(4, 2, 2)}, MakeHeader(2));
+  const DatasetReader reader(path);
+  EXPECT_EQ(reader.header().seed, 2u);
+  EXPECT_EQ(reader.run_indices(), std::vector<int>{4});
+  EXPECT_EQ(Entries(), std::vector<std::string>{"x.h5"});  // no temp files left
+}
+
+TEST_F(DatasetTest, EmptyDatasetHasNoRuns) {
+  const std::string path = Path("x.h5");
+  WriteDataset(path, {}, MakeHeader());
+  EXPECT_TRUE(DatasetReader(path).run_indices().empty());
+}
+
+TEST_F(DatasetTest, MissingFolderThrowsInputErrorAndLeavesNothing) {
+  const std::string path = Path("no/such/folder/x.h5");
+  const std::string msg = InputErrorOf([&] { DatasetWriter w(path, MakeHeader()); });
+  EXPECT_NE(msg.find("cannot write dataset '" + path + "'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("does not exist"), std::string::npos) << msg;
+  EXPECT_TRUE(Entries().empty());
+}
+
+TEST_F(DatasetTest, ReadingAMissingFileThrowsInputError) {
+  const std::string path = Path("missing.h5");
+  EXPECT_EQ(InputErrorOf([&] { DatasetReader r(path); }), "cannot open dataset '" + path + "': no such file");
+}
+
+TEST_F(DatasetTest, ReadingATextFileThrowsNotAnHdf5File) {
+  const std::string path = Path("notes.h5");
+  std::ofstream(path) << "this is not HDF5\n";
+  const std::string msg = InputErrorOf([&] { DatasetReader r(path); });
+  EXPECT_EQ(msg, "cannot open dataset '" + path + "': not an HDF5 file");
+}
+
+TEST_F(DatasetTest, ReadingAForeignHdf5FileNamesTheMissingPart) {
+  const std::string path = Path("foreign.h5");
+  const hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  H5Fclose(f);
+  const std::string msg = InputErrorOf([&] { DatasetReader r(path); });
+  EXPECT_NE(msg.find("dataset '" + path + "'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tactip_version"), std::string::npos) << msg;
+}
+
+TEST_F(DatasetTest, AMissingArrayNamesTheRunAndTheArray) {
+  const std::string path = Path("x.h5");
+  WriteDataset(path, {MakeRun(7, 5, 3)}, MakeHeader());
+  // Remove one array behind the reader's back.
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  ASSERT_GE(H5Ldelete(f, "/runs/run_0007/pins/pos_m", H5P_DEFAULT), 0);
+  H5Fclose(f);
+  const DatasetReader reader(path);
+  EXPECT_NO_THROW(reader.ReadRunSummary(7));
+  const std::string msg = InputErrorOf([&] { reader.ReadRun(7); });
+  EXPECT_NE(msg.find(path), std::string::npos) << msg;
+  EXPECT_NE(msg.find("run_0007"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("pins/pos_m"), std::string::npos) << msg;
+  EXPECT_NE(InputErrorOf([&] { reader.ReadRun(8); }).find("has no run run_0008"), std::string::npos);
+}
+
+TEST(DatasetShapeTest, CheckShapesNamesTheWrongField) {
+  RunRecord r = MakeRun(0, 5, 3);
+  EXPECT_NO_THROW(r.CheckShapes());
+  r.tangential_N.pop_back();
+  try {
+    r.CheckShapes();
+    FAIL() << "no exception";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("tangential_N"), std::string::npos) << e.what();
+  }
+  RunRecord empty;
+  empty.n_pins = 3;
+  EXPECT_THROW(empty.CheckShapes(), std::logic_error);  // T = 0
+  RunRecord no_pins = MakeRun(0, 5, 3);
+  no_pins.n_pins = 0;
+  EXPECT_THROW(no_pins.CheckShapes(), std::logic_error);
+}
+
+TEST_F(DatasetTest, WriteRunRejectsBadRecordsWithLogicError) {
+  DatasetWriter w(Path("x.h5"), MakeHeader());
+  RunRecord bad = MakeRun(0, 5, 3);
+  bad.valid.push_back(1);
+  EXPECT_THROW(w.WriteRun(bad), std::logic_error);
+  w.WriteRun(MakeRun(0, 5, 3));  // the failed call wrote nothing
+  EXPECT_THROW(w.WriteRun(MakeRun(0, 5, 3)), std::logic_error);  // same index twice
+  w.Commit();
+  EXPECT_EQ(DatasetReader(Path("x.h5")).run_indices(), std::vector<int>{0});
+}
+
+}  // namespace
+}  // namespace tactip
