@@ -31,13 +31,19 @@ void BM_RailRunTimestep(benchmark::State& state) {
   cfg.contact.timeconst_s = std::max(cfg.contact.timeconst_s, 2.0 * cfg.sim.timestep_s);
   const tactip::RailScenario scenario(cfg);
   double sim_s = 0.0;
+  tactip::RailRunSummary s;
   for (auto _ : state) {
     tactip::RunRecord rec;
-    sim_s += scenario.Run(0, 1, rec).sim_time_s;
+    s = scenario.Run(0, 1, rec);
+    sim_s += s.sim_time_s;
   }
   state.counters["real_time_factor"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
+  // Accuracy side: onset and its Coulomb prediction (compare across timesteps).
+  state.counters["onset_s"] = s.gross_slip_onset_s;
+  state.counters["onset_minus_coulomb_ms"] = 1e3 * (s.gross_slip_onset_s - s.predicted_onset_s);
+  state.counters["creep_um"] = s.creep_um;
 }
-BENCHMARK(BM_RailRunTimestep)->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_RailRunTimestep)->Arg(5)->Arg(10)->Arg(20)->Arg(25)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 }  // namespace
 
