@@ -1,0 +1,130 @@
+// Pin-velocity features and training-set construction.
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "detectors/detector.h"
+
+namespace tactip {
+
+std::string ToString(FeatureSet f) {
+  switch (f) {
+    case FeatureSet::kDrDtheta: return "drdtheta";
+    case FeatureSet::kDr: return "dr";
+    case FeatureSet::kDtheta: return "dtheta";
+  }
+  return "drdtheta";
+}
+
+FeatureSet ParseFeatureSet(const std::string& s) {
+  if (s == "drdtheta") return FeatureSet::kDrDtheta;
+  if (s == "dr") return FeatureSet::kDr;
+  if (s == "dtheta") return FeatureSet::kDtheta;
+  throw DetectorInputError("features '" + s + "': must be one of drdtheta, dr, dtheta");
+}
+
+int VelocityFeatures::Dim(FeatureSet set, int n_pins) { return set == FeatureSet::kDrDtheta ? 2 * n_pins : n_pins; }
+
+void VelocityFeatures::Reset() {
+  has_prev_ = false;
+  mean_velocity_.setZero();
+}
+
+bool VelocityFeatures::Update(const PinFrame& frame, Eigen::VectorXf& out) {
+  const int n = frame.size();
+  if (has_prev_ && prev_.size() != n) {
+    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
+                             " pins, the previous frame " + std::to_string(prev_.size()));
+  }
+  if (!has_prev_) {
+    prev_ = frame;
+    has_prev_ = true;
+    mean_velocity_.setZero();
+    return false;
+  }
+  // Velocities of the pins seen in both frames.
+  Eigen::VectorXf dr = Eigen::VectorXf::Zero(n), dth = Eigen::VectorXf::Zero(n);
+  std::vector<bool> seen(n, false);
+  Eigen::Vector2f sum = Eigen::Vector2f::Zero();
+  double th_sum = 0.0;
+  int n_seen = 0;
+  for (int i = 0; i < n; ++i) {
+    const bool ok = (frame.valid.empty() || frame.valid[i]) && (prev_.valid.empty() || prev_.valid[i]);
+    if (!ok) continue;
+    const float vx = frame.pos_px(i, 0) - prev_.pos_px(i, 0);
+    const float vy = frame.pos_px(i, 1) - prev_.pos_px(i, 1);
+    dr[i] = std::sqrt(vx * vx + vy * vy);
+    dth[i] = std::atan2(vy, vx);
+    th_sum += dth[i];
+    sum += Eigen::Vector2f(vx, vy);
+    seen[i] = true;
+    ++n_seen;
+  }
+  mean_velocity_ = n_seen > 0 ? Eigen::Vector2f(sum / static_cast<float>(n_seen)) : Eigen::Vector2f::Zero();
+  // Shift the angles of the seen pins to zero mean and wrap to (-pi, pi].
+  const float th_mean = n_seen > 0 ? static_cast<float>(th_sum / n_seen) : 0.0f;
+  const float pi = std::numbers::pi_v<float>;
+  for (int i = 0; i < n; ++i) {
+    if (!seen[i]) continue;
+    float a = dth[i] - th_mean;
+    while (a <= -pi) a += 2.0f * pi;
+    while (a > pi) a -= 2.0f * pi;
+    dth[i] = a;
+  }
+  // Assemble the requested variant: (dr_0, dtheta_0, dr_1, dtheta_1, ...) or one of them.
+  out.resize(Dim(set_, n));
+  for (int i = 0; i < n; ++i) {
+    switch (set_) {
+      case FeatureSet::kDrDtheta:
+        out[2 * i] = dr[i];
+        out[2 * i + 1] = dth[i];
+        break;
+      case FeatureSet::kDr: out[i] = dr[i]; break;
+      case FeatureSet::kDtheta: out[i] = dth[i]; break;
+    }
+  }
+  prev_ = frame;
+  return true;
+}
+
+TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOptions& opts) {
+  if (opts.n_slip < 1 || opts.n_slip > 15) {
+    throw DetectorInputError("n_slip = " + std::to_string(opts.n_slip) + ": must be in [1, 15]");
+  }
+  if (!(opts.static_fraction > 0.0 && opts.static_fraction <= 1.0)) {
+    throw DetectorInputError("static fraction = " + std::to_string(opts.static_fraction) + ": must be in (0, 1]");
+  }
+  std::mt19937_64 gen(opts.seed);
+  std::vector<Eigen::VectorXf> rows;
+  TrainingSet ts;
+  for (const LabeledRun& run : runs) {
+    // Stream every frame (features need the previous one), keep the labelled window.
+    VelocityFeatures feat(opts.features);
+    Eigen::VectorXf f;
+    const int end = run.onset_frame < 0 ? static_cast<int>(run.frames.size())
+                                        : std::min<int>(run.onset_frame + opts.n_slip, run.frames.size());
+    for (int k = 0; k < end; ++k) {
+      if (!feat.Update(run.frames[k], f) || k < run.first_frame) continue;
+      const bool slip = run.onset_frame >= 0 && k >= run.onset_frame;
+      // Seeded downsampling of static frames: draw for every static frame.
+      if (!slip) {
+        const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;
+        if (u >= opts.static_fraction) continue;
+      }
+      rows.push_back(f);
+      ts.y.push_back(slip ? 1 : 0);
+      ts.group.push_back(run.run);
+    }
+  }
+  const int dim = rows.empty() ? 0 : static_cast<int>(rows.front().size());
+  ts.x.resize(static_cast<Eigen::Index>(rows.size()), dim);
+  for (size_t r = 0; r < rows.size(); ++r) {
+    if (rows[r].size() != dim) throw DetectorInputError("runs have different pin counts");
+    ts.x.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
+  }
+  return ts;
+}
+
+}  // namespace tactip

@@ -1,1 +1,0 @@
-#include "detectors/pin_frame.h"
