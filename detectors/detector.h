@@ -62,8 +62,9 @@ std::string ToString(FeatureSet f);
 FeatureSet ParseFeatureSet(const std::string& s);
 
 /// Streaming pin-velocity features. Velocity of pin i = p_i(t) - p_i(t-1) in pixels;
-/// dr_i = |v_i|, dtheta_i = atan2(v_y, v_x) shifted so the frame's mean over the
-/// pins used is zero (removes the slip direction), wrapped to (-pi, pi]. A pin not
+/// dr_i = |v_i|, dtheta_i = atan2(v_y, v_x) minus the frame's circular mean angle over
+/// the pins used (removes the slip direction; the circular mean keeps a slip towards
+/// +-pi from splitting into two clusters), wrapped to (-pi, pi]. A pin not
 /// detected in this or the previous frame has no velocity: it contributes dr = 0 and
 /// dtheta = 0 and is left out of the dtheta mean.
 class VelocityFeatures {
@@ -85,6 +86,8 @@ class VelocityFeatures {
   bool has_prev_ = false;
   PinFrame prev_;
   Eigen::Vector2f mean_velocity_ = Eigen::Vector2f::Zero();
+  Eigen::VectorXf dr_, dth_;           // per-pin scratch, reused every frame
+  std::vector<unsigned char> seen_;    // per pin: velocity available this frame
 };
 
 /// One recorded run converted to frames, with its ground truth (for training and
@@ -106,7 +109,7 @@ struct TrainOptions {
   std::uint64_t seed = 1;        ///< seed of the downsampling
   int cv_folds = 4;              ///< folds of the grouped cross-validation (runs never split)
   std::vector<double> c_grid = {0.1, 1.0, 10.0, 100.0};      ///< SVM / logistic C candidates
-  std::vector<double> gamma_scale_grid = {0.25, 1.0, 4.0};   ///< RBF gamma candidates x 1/dim
+  std::vector<double> gamma_scale_grid = {0.0625, 0.25, 1.0};  ///< RBF gamma candidates x 1/dim
 };
 
 /// Feature matrix with labels and run groups, one row per selected frame.

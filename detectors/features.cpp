@@ -44,48 +44,53 @@ bool VelocityFeatures::Update(const PinFrame& frame, Eigen::VectorXf& out) {
     mean_velocity_.setZero();
     return false;
   }
-  // Velocities of the pins seen in both frames.
-  Eigen::VectorXf dr = Eigen::VectorXf::Zero(n), dth = Eigen::VectorXf::Zero(n);
-  std::vector<bool> seen(n, false);
+  // Velocities of the pins seen in both frames (scratch buffers sized once).
+  dr_.setZero(n);
+  dth_.setZero(n);
+  seen_.assign(n, 0);
   Eigen::Vector2f sum = Eigen::Vector2f::Zero();
-  double th_sum = 0.0;
+  double sin_sum = 0.0, cos_sum = 0.0;
   int n_seen = 0;
   for (int i = 0; i < n; ++i) {
     const bool ok = (frame.valid.empty() || frame.valid[i]) && (prev_.valid.empty() || prev_.valid[i]);
     if (!ok) continue;
     const float vx = frame.pos_px(i, 0) - prev_.pos_px(i, 0);
     const float vy = frame.pos_px(i, 1) - prev_.pos_px(i, 1);
-    dr[i] = std::sqrt(vx * vx + vy * vy);
-    dth[i] = std::atan2(vy, vx);
-    th_sum += dth[i];
+    dr_[i] = std::sqrt(vx * vx + vy * vy);
+    dth_[i] = std::atan2(vy, vx);
+    sin_sum += std::sin(dth_[i]);
+    cos_sum += std::cos(dth_[i]);
     sum += Eigen::Vector2f(vx, vy);
-    seen[i] = true;
+    seen_[i] = 1;
     ++n_seen;
   }
   mean_velocity_ = n_seen > 0 ? Eigen::Vector2f(sum / static_cast<float>(n_seen)) : Eigen::Vector2f::Zero();
-  // Shift the angles of the seen pins to zero mean and wrap to (-pi, pi].
-  const float th_mean = n_seen > 0 ? static_cast<float>(th_sum / n_seen) : 0.0f;
+  // Subtract the circular mean angle of the seen pins and wrap to (-pi, pi].
+  const float th_mean = n_seen > 0 ? static_cast<float>(std::atan2(sin_sum, cos_sum)) : 0.0f;
   const float pi = std::numbers::pi_v<float>;
   for (int i = 0; i < n; ++i) {
-    if (!seen[i]) continue;
-    float a = dth[i] - th_mean;
+    if (!seen_[i]) continue;
+    float a = dth_[i] - th_mean;
     while (a <= -pi) a += 2.0f * pi;
     while (a > pi) a -= 2.0f * pi;
-    dth[i] = a;
+    dth_[i] = a;
   }
   // Assemble the requested variant: (dr_0, dtheta_0, dr_1, dtheta_1, ...) or one of them.
   out.resize(Dim(set_, n));
   for (int i = 0; i < n; ++i) {
     switch (set_) {
       case FeatureSet::kDrDtheta:
-        out[2 * i] = dr[i];
-        out[2 * i + 1] = dth[i];
+        out[2 * i] = dr_[i];
+        out[2 * i + 1] = dth_[i];
         break;
-      case FeatureSet::kDr: out[i] = dr[i]; break;
-      case FeatureSet::kDtheta: out[i] = dth[i]; break;
+      case FeatureSet::kDr: out[i] = dr_[i]; break;
+      case FeatureSet::kDtheta: out[i] = dth_[i]; break;
     }
   }
-  prev_ = frame;
+  // Keep the previous frame in place (no reallocation when sizes match).
+  prev_.time_s = frame.time_s;
+  prev_.pos_px = frame.pos_px;
+  prev_.valid.assign(frame.valid.begin(), frame.valid.end());
   return true;
 }
 

@@ -67,7 +67,8 @@ struct SkinConfig {
 
 /// Contact properties of the skin (the `contact.` section).
 struct ContactConfig {
-  double friction = 1.0;            ///< Coulomb coefficient skin-stimulus
+  double friction = 1.0;            ///< static Coulomb coefficient skin-stimulus
+  double kinetic_ratio = 0.8;       ///< kinetic / static friction coefficient
   double friction_jitter = 0.05;    ///< per-run relative perturbation of the friction (uniform +-)
   double timeconst_s = 0.004;       ///< contact softness time constant
   double impedance = 0.99;          ///< contact impedance d (solimp), closer to 1 = harder
@@ -75,8 +76,14 @@ struct ContactConfig {
   template <class V>
   void Visit(V& v) {
     v("friction", friction, "",
-      "Coulomb friction coefficient between skin and stimulus (silicone rubber on PLA/acrylic ~0.5-1.5).",
+      "Static Coulomb friction coefficient between skin and stimulus (silicone rubber on PLA/acrylic "
+      "~0.5-1.5).",
       Bounds::Closed(0.01, 5.0));
+    v("kinetic_ratio", kinetic_ratio, "",
+      "Kinetic over static friction (rubber on smooth plastics ~0.7-0.9). A sliding pin's coefficient "
+      "drops to kinetic_ratio * friction until it sticks again, so slip starts with the sudden release seen "
+      "on hardware; 1 gives pure single-coefficient Coulomb friction.",
+      Bounds::LeftOpen(0.0, 1.0));
     v("friction_jitter", friction_jitter, "",
       "Per-run variation: friction is drawn uniformly in friction * (1 +- jitter). 0 switches it off.",
       Bounds::RightOpen(0.0, 1.0));

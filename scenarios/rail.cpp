@@ -165,10 +165,14 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
 
   // This run's model: the shared one with this run's friction.
   CompiledModel model = im.model->Copy();
-  model.SetGeomFriction(im.stimulus_geom, mu);
+  // MuJoCo takes the larger of the two geoms' coefficients: the stimulus gets the
+  // kinetic value and each pin switches between static and kinetic as it sticks/slides.
+  const double mu_k = mu * c.contact.kinetic_ratio;
+  model.SetGeomFriction(im.stimulus_geom, mu_k);
   for (int g : im.pin_geom) {
     if (g >= 0) model.SetGeomFriction(g, mu);
   }
+  std::vector<std::uint8_t> sliding(N, 0);  // per pin: kinetic friction in force
   Simulation sim(model);
   sim.Forward();
 
@@ -219,7 +223,8 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
     const bool frame_now = n == next_frame_step;
     const bool seek_onset = t >= sched.lift_start && std::isnan(sum.gross_slip_onset_s);
     const bool seek_prediction = t >= sched.retract_start && std::isnan(sum.predicted_onset_s);
-    if (!frame_now && !seek_onset && !seek_prediction) continue;
+    const bool two_coefficients = c.contact.kinetic_ratio < 1.0;
+    if (!frame_now && !seek_onset && !seek_prediction && !two_coefficients) continue;
     sim.ReadContacts(im.slot_of_geom, contacts);
     double sum_normal = 0.0;
     for (int i = 0; i < N; ++i) {
@@ -228,9 +233,21 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
       const double fn = Dot(gc.force_world, gc.normal_world);
       for (int k = 0; k < 3; ++k) tangential[i][k] = gc.force_world[k] - fn * gc.normal_world[k];
       const double ft = std::sqrt(Dot(tangential[i], tangential[i]));
-      samples[i] = {gc.in_contact, gc.slip_speed_m_s, gc.in_contact ? ft / (mu * gc.normal_N) : 0.0};
+      const double mu_now = sliding[i] ? mu_k : mu;
+      samples[i] = {gc.in_contact, gc.slip_speed_m_s, gc.in_contact ? ft / (mu_now * gc.normal_N) : 0.0};
     }
     const FrameLabels fl = LabelFrame(samples, c.labels, pin_contact.data(), pin_slip.data());
+    if (two_coefficients) {
+      // Static -> kinetic when a pin slides, back when it sticks (or leaves contact).
+      for (int i = 0; i < N; ++i) {
+        const bool now = pin_slip[i] || (sliding[i] && samples[i].in_contact &&
+                                         samples[i].slip_speed_m_s > c.labels.slip_speed_m_s);
+        if (now != static_cast<bool>(sliding[i]) && im.pin_geom[i] >= 0) {
+          model.SetGeomFriction(im.pin_geom[i], now ? mu_k : mu);
+          sliding[i] = now ? 1 : 0;
+        }
+      }
+    }
     // Gross slip: every contacting pin slides and the object moves along the rail
     // relative to the sensor (with rail friction the skin alone may creep under a
     // still object for a few frames first).
@@ -319,6 +336,7 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   rec.attrs["object_fall_s"] = sum.object_fall_s;
   rec.attrs["object_mass_kg"] = c.object.mass_kg;
   rec.attrs["friction_coefficient"] = mu;
+  rec.attrs["kinetic_friction_coefficient"] = mu_k;
   rec.attrs["retract_speed_mm_s"] = c.rail.retract_speed_mm_s;
   rec.attrs["press_depth_mm"] = sum.press_depth_mm;
   rec.attrs["retract_start_s"] = sum.retract_start_s;

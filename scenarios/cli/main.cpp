@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "detectors/detector.h"
+#include "scenarios/cli/detect_commands.h"
 #include "scenarios/registry.h"
 #include "sensors/dataset.h"
 #include "sim/files.h"
@@ -132,6 +134,9 @@ int main(int argc, char** argv) {
   add_config_opts(cmd_config);
   cmd_config->add_flag("--yaml", as_yaml, "Print the resolved config as YAML instead of the table.");
 
+  // tactip train / evaluate / detect / bench
+  const auto run_detector_command = tactip::cli::AddDetectorCommands(app, &g_stop);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -156,6 +161,7 @@ int main(int argc, char** argv) {
       PrintDatasetSummary(info_path, !no_config);
       return 0;
     }
+    if (const int code = run_detector_command(); code >= 0) return code;
     const tactip::ScenarioEntry& entry = tactip::FindScenario(scenario_name);
     tactip::ConfigSource src;
     src.yaml_path = config_path;
@@ -209,6 +215,9 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const tactip::InputError& e) {
+    std::fprintf(stderr, "tactip: %s\n", e.what());
+    return 2;
+  } catch (const tactip::DetectorInputError& e) {
     std::fprintf(stderr, "tactip: %s\n", e.what());
     return 2;
   } catch (const tactip::ModelError& e) {

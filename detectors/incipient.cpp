@@ -1,0 +1,214 @@
+// Incipient-slip detection by bulk subtraction, with ring buffers so the streaming path
+// does not allocate once the first frame has sized them.
+
+#include "detectors/incipient.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "detectors/text_io.h"
+
+namespace tactip {
+namespace {
+
+constexpr const char* kHeader = "tactip-detector incipient 1";
+
+/// Parses a whole token as a number of type T; false on anything else.
+template <typename T>
+bool ParseNumber(const std::string& s, T& out) {
+  const char* end = s.data() + s.size();
+  const auto [p, ec] = std::from_chars(s.data(), end, out);
+  return ec == std::errc() && p == end;
+}
+
+/// Shortest text that reads back as exactly `v`.
+std::string RoundTrip(double v) {
+  char buf[64];
+  const auto [p, ec] = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, p);
+}
+
+}  // namespace
+
+IncipientDetector::IncipientDetector(const IncipientParams& params) : params_(params) {
+  if (params.window < 1) {
+    throw DetectorInputError("window = " + std::to_string(params.window) + ": must be >= 1");
+  }
+  if (!(params.speed_thr_px > 0.0) || !std::isfinite(params.speed_thr_px)) {
+    throw DetectorInputError("speed_thr_px = " + RoundTrip(params.speed_thr_px) + ": must be finite and > 0");
+  }
+  if (params.count_thr < 1) {
+    throw DetectorInputError("count_thr = " + std::to_string(params.count_thr) + ": must be >= 1");
+  }
+}
+
+void IncipientDetector::Reset() {
+  // Keep the buffers (their sizes are reused if the next run has the same pin count).
+  has_prev_ = false;
+  frames_in_ring_ = 0;
+  ring_head_ = 0;
+  std::fill(in_set_.begin(), in_set_.end(), 0);
+  slipping_.clear();
+}
+
+Decision IncipientDetector::Update(const PinFrame& frame) {
+  const int n = frame.size();
+  if (!frame.valid.empty() && static_cast<int>(frame.valid.size()) != n) {
+    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
+                             " pins but " + std::to_string(frame.valid.size()) + " valid flags");
+  }
+  if (has_prev_ && n != n_pins_) {
+    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
+                             " pins, the previous frame " + std::to_string(n_pins_));
+  }
+  Decision d;
+  if (!has_prev_) {
+    // First frame of a run: size the buffers, remember the positions, no velocity yet.
+    if (n != n_pins_ || ring_x_.cols() != params_.window) {
+      n_pins_ = n;
+      ring_x_.resize(n, params_.window);
+      ring_y_.resize(n, params_.window);
+      smoothed_.resize(n);
+      moved_.assign(n, 0);
+      in_set_.assign(n, 0);
+      slipping_.reserve(n);
+    }
+    prev_pos_ = frame.pos_px;
+    if (frame.valid.empty()) {
+      prev_valid_.assign(n, 1);
+    } else {
+      prev_valid_.assign(frame.valid.begin(), frame.valid.end());
+    }
+    has_prev_ = true;
+    d.n_slipping = static_cast<int>(slipping_.size());
+    return d;
+  }
+
+  // Velocity for this frame into the ring (0 for pins missed in either frame).
+  for (int i = 0; i < n; ++i) {
+    const bool ok = prev_valid_[i] && (frame.valid.empty() || frame.valid[i]);
+    moved_[i] = ok ? 1 : 0;
+    ring_x_(i, ring_head_) = ok ? static_cast<double>(frame.pos_px(i, 0)) - prev_pos_(i, 0) : 0.0;
+    ring_y_(i, ring_head_) = ok ? static_cast<double>(frame.pos_px(i, 1)) - prev_pos_(i, 1) : 0.0;
+  }
+  ring_head_ = (ring_head_ + 1) % params_.window;
+  if (frames_in_ring_ < params_.window) ++frames_in_ring_;
+
+  // Moving average of the velocity over the filled columns (order does not matter),
+  // then its magnitude.
+  for (int i = 0; i < n; ++i) {
+    double ax = 0.0, ay = 0.0;
+    for (int c = 0; c < frames_in_ring_; ++c) {
+      ax += ring_x_(i, c);
+      ay += ring_y_(i, c);
+    }
+    smoothed_[i] = std::sqrt(ax * ax + ay * ay) / frames_in_ring_;
+  }
+
+  // Bulk speed s(t) over the static pins with a velocity.
+  double sum = 0.0;
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    if (moved_[i] && !in_set_[i]) {
+      sum += smoothed_[i];
+      ++count;
+    }
+  }
+  const double s = count > 0 ? sum / count : 0.0;
+
+  // Pins clearly faster than the bulk join the set, once the window is full: a pin judged
+  // on one or two raw (unsmoothed) speeds would join on noise and never leave.
+  bool grew = false;
+  const bool judge = frames_in_ring_ == params_.window;
+  for (int i = 0; judge && i < n; ++i) {
+    if (moved_[i] && !in_set_[i] && smoothed_[i] - s > params_.speed_thr_px) {
+      in_set_[i] = 1;
+      grew = true;
+    }
+  }
+  if (grew) {
+    slipping_.clear();
+    for (int i = 0; i < n; ++i) {
+      if (in_set_[i]) slipping_.push_back(i);
+    }
+  }
+
+  // Remember this frame (same sizes: no reallocation).
+  prev_pos_ = frame.pos_px;
+  if (frame.valid.empty()) {
+    std::fill(prev_valid_.begin(), prev_valid_.end(), 1);
+  } else {
+    std::copy(frame.valid.begin(), frame.valid.end(), prev_valid_.begin());
+  }
+
+  d.score = s;
+  d.n_slipping = static_cast<int>(slipping_.size());
+  d.slip = d.n_slipping >= params_.count_thr;
+  d.slipping_pins = slipping_;
+  return d;
+}
+
+void IncipientDetector::Save(const std::string& path) const {
+  std::string text = std::string(kHeader) + "\n";
+  text += "window " + std::to_string(params_.window) + "\n";
+  text += "speed_thr_px " + RoundTrip(params_.speed_thr_px) + "\n";
+  text += "count_thr " + std::to_string(params_.count_thr) + "\n";
+  WriteTextAtomic(path, text);
+}
+
+std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& path) {
+  const std::string text = ReadText(path);
+  const std::string where = "model '" + path + "': ";
+  std::istringstream in(text);
+  std::string line;
+  int line_no = 0;
+  bool have_header = false, have_window = false, have_speed = false, have_count = false;
+  IncipientParams p;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!have_header) {
+      if (line != kHeader) {
+        throw DetectorInputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
+      }
+      have_header = true;
+      continue;
+    }
+    // "key value" lines; blank lines are ignored.
+    const std::string at = where + "line " + std::to_string(line_no) + ": ";
+    std::istringstream fields(line);
+    std::string key, value, extra;
+    if (!(fields >> key)) continue;
+    if (!(fields >> value) || (fields >> extra)) throw DetectorInputError(at + "expected 'key value'");
+    bool* seen = nullptr;
+    bool ok = false;
+    if (key == "window") {
+      seen = &have_window;
+      ok = ParseNumber(value, p.window);
+    } else if (key == "speed_thr_px") {
+      seen = &have_speed;
+      ok = ParseNumber(value, p.speed_thr_px);
+    } else if (key == "count_thr") {
+      seen = &have_count;
+      ok = ParseNumber(value, p.count_thr);
+    } else {
+      throw DetectorInputError(at + "unknown key '" + key + "'");
+    }
+    if (*seen) throw DetectorInputError(at + "duplicate " + key);
+    if (!ok) throw DetectorInputError(at + key + " '" + value + "' is not a number");
+    *seen = true;
+  }
+  if (!have_header) throw DetectorInputError(where + "empty file, expected '" + kHeader + "'");
+  if (!have_window) throw DetectorInputError(where + "missing window");
+  if (!have_speed) throw DetectorInputError(where + "missing speed_thr_px");
+  if (!have_count) throw DetectorInputError(where + "missing count_thr");
+  try {
+    return std::make_unique<IncipientDetector>(p);
+  } catch (const DetectorInputError& e) {
+    throw DetectorInputError(where + e.what());
+  }
+}
+
+}  // namespace tactip

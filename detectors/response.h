@@ -1,0 +1,63 @@
+#pragma once
+// Response strategies that turn per-sensor slip decisions into one action ("2Fr1Sen":
+// two consecutive slip frames on at least one sensor), and the contact measure d(t).
+
+#include <string>
+#include <vector>
+
+#include "detectors/detector.h"
+
+namespace tactip {
+
+/// "NFr consecutive slip frames per sensor, NSen sensors agreeing": fires in a frame in
+/// which at least NSen sensors have a streak of >= NFr consecutive slip frames ending in
+/// that frame. Does not latch: a broken streak must be rebuilt.
+class ResponseStrategy {
+ public:
+  /// Throws DetectorInputError unless n_frames >= 1 and 1 <= n_sensors_required <= n_sensors_total.
+  ResponseStrategy(int n_frames, int n_sensors_required, int n_sensors_total);
+
+  /// Parses "<NFr>Fr<NSen>Sen" (e.g. "2Fr1Sen"; "fr"/"sen" in any case); throws
+  /// DetectorInputError naming the string if malformed or NSen > n_sensors_total.
+  static ResponseStrategy Parse(const std::string& s, int n_sensors_total);
+
+  /// Consumes one frame of per-sensor decisions (size n_sensors_total, else
+  /// DetectorInputError); true when the strategy fires in this frame.
+  bool Update(const std::vector<bool>& per_sensor_slip);
+  /// Clears every streak.
+  void Reset();
+
+  /// Canonical name, e.g. "2Fr1Sen".
+  std::string ToString() const;
+  /// NFr: consecutive slip frames needed per sensor.
+  int n_frames() const { return n_frames_; }
+  /// NSen: sensors that must agree.
+  int n_sensors_required() const { return n_sensors_required_; }
+  /// Number of sensors fed to Update.
+  int n_sensors_total() const { return n_sensors_total_; }
+
+ private:
+  int n_frames_;
+  int n_sensors_required_;
+  int n_sensors_total_;
+  std::vector<int> streak_;  // consecutive slip frames per sensor, ending at the last frame
+};
+
+/// Contact measure d(t) = mean_i |p_i(t) - p_i(0)| in pixels, relative to the first
+/// frame after Reset (the no-contact frame), over the pins detected in both frames.
+class ContactMeasure {
+ public:
+  /// Forgets the reference frame.
+  void Reset();
+  /// Consumes a frame and returns d(t): 0 for the reference frame itself and when no pin
+  /// is detected in both frames. Throws DetectorInputError if the pin count changes.
+  double Update(const PinFrame& frame);
+  /// True once a reference frame has been seen.
+  bool has_reference() const { return has_ref_; }
+
+ private:
+  bool has_ref_ = false;
+  PinFrame ref_;
+};
+
+}  // namespace tactip

@@ -1,0 +1,166 @@
+// The threshold gross-slip detector: training by an F1 sweep, streaming decisions and a
+// one-parameter text model.
+
+#include "detectors/threshold.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <utility>
+
+#include "detectors/text_io.h"
+
+namespace tactip {
+namespace {
+
+constexpr const char* kHeader = "tactip-detector threshold 1";
+
+/// Parses a whole token as a double (round-trip exact); false on anything else.
+bool ParseDouble(const std::string& s, double& out) {
+  const char* end = s.data() + s.size();
+  const auto [p, ec] = std::from_chars(s.data(), end, out);
+  return ec == std::errc() && p == end;
+}
+
+/// Shortest text that reads back as exactly `v`.
+std::string RoundTrip(double v) {
+  char buf[64];
+  const auto [p, ec] = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, p);
+}
+
+/// F1 = 2 tp / (2 tp + fp + fn); 0 when undefined.
+double F1Score(long tp, long fp, long fn) {
+  const long den = 2 * tp + fp + fn;
+  return den > 0 ? 2.0 * static_cast<double>(tp) / static_cast<double>(den) : 0.0;
+}
+
+}  // namespace
+
+ThresholdDetector::ThresholdDetector(double threshold_px) : threshold_px_(threshold_px) {
+  if (!std::isfinite(threshold_px) || threshold_px < 0.0) {
+    throw DetectorInputError("threshold_px = " + RoundTrip(threshold_px) + ": must be finite and >= 0");
+  }
+}
+
+void ThresholdDetector::Reset() { features_.Reset(); }
+
+Decision ThresholdDetector::Update(const PinFrame& frame) {
+  Decision d;
+  if (!features_.Update(frame, scratch_)) return d;  // first frame: no velocity yet
+  d.score = static_cast<double>(features_.mean_velocity().norm());
+  d.slip = d.score >= threshold_px_;
+  return d;
+}
+
+void ThresholdDetector::Save(const std::string& path) const {
+  WriteTextAtomic(path, std::string(kHeader) + "\nthreshold_px " + RoundTrip(threshold_px_) + "\n");
+}
+
+std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& path) {
+  const std::string text = ReadText(path);
+  const std::string where = "model '" + path + "': ";
+  std::istringstream in(text);
+  std::string line;
+  int line_no = 0;
+  bool have_header = false, have_t = false;
+  double t = 0.0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!have_header) {
+      if (line != kHeader) {
+        throw DetectorInputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
+      }
+      have_header = true;
+      continue;
+    }
+    // "key value" lines; blank lines are ignored.
+    std::istringstream fields(line);
+    std::string key, value, extra;
+    if (!(fields >> key)) continue;
+    if (!(fields >> value) || (fields >> extra)) {
+      throw DetectorInputError(where + "line " + std::to_string(line_no) + ": expected 'key value'");
+    }
+    if (key != "threshold_px") {
+      throw DetectorInputError(where + "line " + std::to_string(line_no) + ": unknown key '" + key + "'");
+    }
+    if (have_t) throw DetectorInputError(where + "line " + std::to_string(line_no) + ": duplicate threshold_px");
+    if (!ParseDouble(value, t)) {
+      throw DetectorInputError(where + "line " + std::to_string(line_no) + ": threshold_px '" + value +
+                               "' is not a number");
+    }
+    have_t = true;
+  }
+  if (!have_header) throw DetectorInputError(where + "empty file, expected '" + kHeader + "'");
+  if (!have_t) throw DetectorInputError(where + "missing threshold_px");
+  try {
+    return std::make_unique<ThresholdDetector>(t);
+  } catch (const DetectorInputError& e) {
+    throw DetectorInputError(where + e.what());
+  }
+}
+
+std::unique_ptr<ThresholdDetector> ThresholdDetector::Train(const std::vector<LabeledRun>& runs,
+                                                            const TrainOptions& opts) {
+  if (opts.n_slip < 1 || opts.n_slip > 15) {
+    throw DetectorInputError("n_slip = " + std::to_string(opts.n_slip) + ": must be in [1, 15]");
+  }
+  if (!(opts.static_fraction > 0.0 && opts.static_fraction <= 1.0)) {
+    throw DetectorInputError("static fraction = " + std::to_string(opts.static_fraction) + ": must be in (0, 1]");
+  }
+  // Select frames exactly as BuildTrainingSet does (same generator, same draws) and keep
+  // (v, label) for each.
+  std::mt19937_64 gen(opts.seed);
+  std::vector<std::pair<double, int>> samples;
+  long n_pos = 0;
+  for (const LabeledRun& run : runs) {
+    VelocityFeatures feat(FeatureSet::kDr);
+    Eigen::VectorXf f;
+    const int end = run.onset_frame < 0 ? static_cast<int>(run.frames.size())
+                                        : std::min<int>(run.onset_frame + opts.n_slip, run.frames.size());
+    for (int k = 0; k < end; ++k) {
+      if (!feat.Update(run.frames[k], f) || k < run.first_frame) continue;
+      const bool slip = run.onset_frame >= 0 && k >= run.onset_frame;
+      if (!slip) {
+        const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;
+        if (u >= opts.static_fraction) continue;
+      }
+      samples.emplace_back(static_cast<double>(feat.mean_velocity().norm()), slip ? 1 : 0);
+      n_pos += slip ? 1 : 0;
+    }
+  }
+  if (n_pos == 0) throw DetectorInputError("threshold training: the selected frames hold no slip frame");
+
+  // Sweep T upward over the sorted distinct values. Candidate j puts T at the lowest
+  // distinct value (everything slip) or midway between distinct values j-1 and j.
+  std::sort(samples.begin(), samples.end());
+  long tp = n_pos, fp = static_cast<long>(samples.size()) - n_pos, fn = 0;
+  double best_t = samples.front().first, best_f1 = F1Score(tp, fp, fn);
+  size_t i = 0;
+  while (i < samples.size()) {
+    // Move every sample equal to the current value below the threshold.
+    const double value = samples[i].first;
+    while (i < samples.size() && samples[i].first == value) {
+      if (samples[i].second == 1) {
+        --tp;
+        ++fn;
+      } else {
+        --fp;
+      }
+      ++i;
+    }
+    if (i == samples.size()) break;  // "nothing is slip" never beats a slip frame caught
+    const double t = 0.5 * (value + samples[i].first);
+    const double f1 = F1Score(tp, fp, fn);
+    if (f1 > best_f1) {  // strict: ties keep the smaller T
+      best_f1 = f1;
+      best_t = t;
+    }
+  }
+  return std::make_unique<ThresholdDetector>(best_t);
+}
+
+}  // namespace tactip

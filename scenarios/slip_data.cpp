@@ -1,0 +1,106 @@
+#include "scenarios/slip_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "detectors/pin_csv.h"
+#include "sensors/dataset.h"
+#include "sim/config.h"
+
+namespace tactip {
+
+std::vector<int> ParseRunList(const std::string& text) {
+  std::set<int> out;
+  size_t start = 0;
+  auto bad = [&] { return InputError("--runs '" + text + "': expected e.g. 0-19 or 0,3,5-7"); };
+  auto number = [&](const std::string& s) {
+    if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9) throw bad();
+    return std::stoi(s);
+  };
+  if (text.empty()) throw bad();
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    const size_t dash = item.find('-');
+    if (dash == std::string::npos) {
+      out.insert(number(item));
+    } else {
+      const int a = number(item.substr(0, dash)), b = number(item.substr(dash + 1));
+      if (b < a) throw bad();
+      for (int i = a; i <= b; ++i) out.insert(i);
+    }
+    start = comma + 1;
+  }
+  return {out.begin(), out.end()};
+}
+
+std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs) {
+  const DatasetReader reader(path);
+  std::vector<int> wanted = runs.empty() ? reader.run_indices() : runs;
+  std::vector<LabeledRun> out;
+  for (int idx : wanted) {
+    if (!std::binary_search(reader.run_indices().begin(), reader.run_indices().end(), idx)) {
+      throw InputError(fmt::format("dataset '{}' has no run {} (it has {} runs)", path, idx,
+                                   reader.run_indices().size()));
+    }
+    const RunRecord rec = reader.ReadRun(idx);
+    LabeledRun run;
+    run.run = idx;
+    const size_t T = rec.frames(), N = static_cast<size_t>(rec.n_pins);
+    if (T >= 2) run.frame_rate_hz = (T - 1) / (rec.time.back() - rec.time.front());
+    // Frames: noisy pixel positions and detection flags, exactly what a camera gives.
+    run.frames.resize(T);
+    for (size_t f = 0; f < T; ++f) {
+      PinFrame& pf = run.frames[f];
+      pf.time_s = rec.time[f];
+      pf.pos_px.resize(static_cast<Eigen::Index>(N), 2);
+      pf.valid.assign(rec.valid.begin() + f * N, rec.valid.begin() + (f + 1) * N);
+      for (size_t i = 0; i < N; ++i) {
+        pf.pos_px(static_cast<Eigen::Index>(i), 0) = rec.pos_px[(f * N + i) * 2];
+        pf.pos_px(static_cast<Eigen::Index>(i), 1) = rec.pos_px[(f * N + i) * 2 + 1];
+      }
+    }
+    // Ground truth: labelled window from the retraction, onset from the exact onset time.
+    auto attr = [&](const char* k) {
+      auto it = rec.attrs.find(k);
+      return it == rec.attrs.end() ? std::nan("") : it->second;
+    };
+    const double retract = attr("retract_start_s"), onset = attr("gross_slip_onset_s");
+    run.first_frame = 0;
+    if (!std::isnan(retract)) {
+      while (run.first_frame < static_cast<int>(T) && rec.time[run.first_frame] < retract) ++run.first_frame;
+    }
+    run.onset_frame = -1;
+    if (!std::isnan(onset)) {
+      for (size_t f = 0; f < T; ++f) {
+        if (rec.time[f] >= onset - 1e-9) {
+          run.onset_frame = static_cast<int>(f);
+          break;
+        }
+      }
+    }
+    out.push_back(std::move(run));
+  }
+  return out;
+}
+
+std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs) {
+  auto ends_with = [&](const char* s) {
+    const std::string x(s);
+    return path.size() >= x.size() && path.compare(path.size() - x.size(), x.size(), x) == 0;
+  };
+  if (ends_with(".csv")) {
+    LabeledRun run;
+    run.frames = ReadPinCsv(path);
+    if (run.frames.size() >= 2) {
+      run.frame_rate_hz = (run.frames.size() - 1) / (run.frames.back().time_s - run.frames.front().time_s);
+    }
+    return {std::move(run)};
+  }
+  return LoadDatasetRuns(path, runs);
+}
+
+}  // namespace tactip
