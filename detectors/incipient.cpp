@@ -118,19 +118,14 @@ Decision IncipientDetector::Update(const PinFrame& frame) {
   }
   const double s = count > 0 ? sum / count : 0.0;
 
-  // Pins clearly faster than the bulk join the set, once the window is full: a pin judged
-  // on one or two raw (unsmoothed) speeds would join on noise and never leave.
-  bool grew = false;
+  // The slipping set is re-judged every frame once the window is full: a pin is in it
+  // while its smoothed speed exceeds the bulk speed of the pins that were static in the
+  // previous frame by more than s_thr. Pins missed this frame keep their membership.
   const bool judge = frames_in_ring_ == params_.window;
-  for (int i = 0; judge && i < n; ++i) {
-    if (moved_[i] && !in_set_[i] && smoothed_[i] - s > params_.speed_thr_px) {
-      in_set_[i] = 1;
-      grew = true;
-    }
-  }
-  if (grew) {
+  if (judge) {
     slipping_.clear();
     for (int i = 0; i < n; ++i) {
+      if (moved_[i]) in_set_[i] = smoothed_[i] - s > params_.speed_thr_px ? 1 : 0;
       if (in_set_[i]) slipping_.push_back(i);
     }
   }

@@ -101,7 +101,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   m.pin_damping_Ns_m = 2.0 * skin.damping_ratio * std::sqrt(m.k_normal_N_m * m.pin_mass_kg);
   const double n = static_cast<double>(n_pins);
   const double shell_total_mass = m.shell_mass_kg + n * m.pin_mass_kg;
-  m.shell_damping_Ns_m = 2.0 * skin.damping_ratio * std::sqrt(n * m.k_shear_N_m * shell_total_mass);
+  m.shell_damping_Ns_m = 2.0 * skin.shear_damping_ratio * std::sqrt(n * m.k_shear_N_m * shell_total_mass);
   return m;
 }
 

@@ -24,6 +24,7 @@ struct SkinConfig {
   double gel_depth_mm = 20.0;       ///< depth of the gel column under each pin
   double skin_modulus_mpa = 1.0;    ///< Young's modulus of the skin rubber
   double damping_ratio = 0.7;       ///< damping ratio of each pin's normal mode
+  double shear_damping_ratio = 4.0; ///< damping ratio of the skin's in-plane (shear) mode
   double contact_radius_mm = 1.5;   ///< radius of the spherical contact patch at each pin
 
   template <class V>
@@ -57,6 +58,11 @@ struct SkinConfig {
       "Damping ratio of each pin's normal mode (gel viscosity); joint damping 2 zeta sqrt(k m), "
       "integrated implicitly.",
       Bounds::Closed(0.0, 10.0));
+    v("shear_damping_ratio", shear_damping_ratio, "",
+      "Damping ratio of the skin's in-plane shear mode on the gel. The gel is viscous: its shear response is "
+      "overdamped, so released shear relaxes over a few frames (4 -> ~30 ms time constant), as the multi-frame "
+      "slip spike of real TacTips shows.",
+      Bounds::Closed(0.0, 20.0));
     v("contact_radius_mm", contact_radius_mm, "mm",
       "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",
       Bounds::Closed(0.1, 10.0));
@@ -68,7 +74,7 @@ struct SkinConfig {
 /// Contact properties of the skin (the `contact.` section).
 struct ContactConfig {
   double friction = 1.0;            ///< static Coulomb coefficient skin-stimulus
-  double kinetic_ratio = 0.8;       ///< kinetic / static friction coefficient
+  double kinetic_ratio = 0.6;       ///< kinetic / static friction coefficient
   double friction_jitter = 0.05;    ///< per-run relative perturbation of the friction (uniform +-)
   double timeconst_s = 0.004;       ///< contact softness time constant
   double impedance = 0.99;          ///< contact impedance d (solimp), closer to 1 = harder
@@ -80,7 +86,7 @@ struct ContactConfig {
       "~0.5-1.5).",
       Bounds::Closed(0.01, 5.0));
     v("kinetic_ratio", kinetic_ratio, "",
-      "Kinetic over static friction (rubber on smooth plastics ~0.7-0.9). A sliding pin's coefficient "
+      "Kinetic over static friction (silicone rubber on smooth plastics ~0.5-0.8). A sliding pin's coefficient "
       "drops to kinetic_ratio * friction until it sticks again, so slip starts with the sudden release seen "
       "on hardware; 1 gives pure single-coefficient Coulomb friction.",
       Bounds::LeftOpen(0.0, 1.0));

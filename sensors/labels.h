@@ -20,8 +20,9 @@ struct LabelConfig {
     v("slip_speed_m_s", slip_speed_m_s, "m/s",
       "A contacting pin is labelled slipping when the tangential speed of the stimulus relative to it exceeds "
       "this (and its force is on the friction cone). Stuck contacts move < 1e-7 m/s with the noslip pass; a "
-      "sliding object at 0.1 mm/s retraction reaches 1e-5 m/s about 5 ms after the Coulomb threshold, so "
-      "onsets agree within a frame over 1e-6 .. 1e-4.",
+      "sliding object reaches 1e-5 m/s within a few ms of the Coulomb threshold. Onsets agree within a frame "
+      "over 1e-6 .. 1e-4 and per-pin labels over 1e-5 .. 1e-4; below ~1e-6 saturated edge pins with tiny "
+      "normal force show MuJoCo's residual creep.",
       Bounds::Closed(1e-7, 1e-1));
     v("cone_fraction", cone_fraction, "",
       "A sliding pin's friction force also sits on the Coulomb cone: |f_t| >= cone_fraction * mu * f_n. This "

@@ -1,0 +1,205 @@
+// The detector commands end to end on a small simulated dataset: train, evaluate,
+// detect (HDF5 and CSV input), bench, and their one-line errors.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "detectors/pin_csv.h"
+#include "scenarios/slip_data.h"
+#include "sim/config.h"
+
+namespace fs = std::filesystem;
+
+namespace tactip {
+namespace {
+
+struct CliResult {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string Slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> Lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string line;
+  while (std::getline(ss, line)) out.push_back(line);
+  return out;
+}
+
+// One small dataset shared by all tests of the suite: 6 quick runs.
+class DetectCliTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // One folder per process: ctest runs each test in its own process, in parallel.
+    dir_ = fs::temp_directory_path() / ("tactip_detect_cli_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    const CliResult g = Run("generate rail --runs 6 --speed-mm-s 1 --set rail.lift_mm=10 --set rail.hold_s=0.1 "
+                            "--seed 5 --quiet --out " + P("d.h5"));
+    ASSERT_EQ(g.code, 0) << g.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  static CliResult Run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string cmd =
+        std::string(TACTIP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string() + " < /dev/null";
+    const int status = std::system(cmd.c_str());
+    CliResult r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = Slurp(out);
+    r.err = Slurp(err);
+    return r;
+  }
+  static std::string P(const std::string& name) { return (dir_ / name).string(); }
+
+  static fs::path dir_;
+};
+fs::path DetectCliTest::dir_;
+
+TEST(RunListTest, ParsesRangesAndListsSortedUnique) {
+  EXPECT_EQ(ParseRunList("0-3"), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(ParseRunList("5,1-2,2"), (std::vector<int>{1, 2, 5}));
+  for (const char* bad : {"", "a", "3-1", "1,,2", "-2", "1-"}) {
+    EXPECT_THROW(ParseRunList(bad), InputError) << bad;
+  }
+}
+
+TEST_F(DetectCliTest, DatasetRunsCarryTheirOnsetFrame) {
+  const auto runs = LoadDatasetRuns(P("d.h5"), {0, 5});
+  ASSERT_EQ(runs.size(), 2u);
+  for (const auto& r : runs) {
+    ASSERT_GE(r.onset_frame, r.first_frame);
+    EXPECT_GE(r.frames[r.onset_frame].time_s + 1e-9, r.frames[r.onset_frame - 1].time_s);
+    EXPECT_NEAR(r.frame_rate_hz, 100.0, 1e-6);
+    EXPECT_EQ(r.frames.front().size(), 127);
+  }
+}
+
+TEST_F(DetectCliTest, TrainEvaluateAndDetectEveryKind) {
+  for (const char* kind : {"threshold", "logreg", "svm-linear", "svm"}) {
+    const std::string model = P(std::string(kind) + ".model");
+    const CliResult t = Run(std::string("train ") + kind + " --data " + P("d.h5") + " --runs 0-3 --out " + model);
+    ASSERT_EQ(t.code, 0) << kind << ": " << t.err;
+    const CliResult e = Run("evaluate --model " + model + " --data " + P("d.h5") + " --runs 4-5 --per-run");
+    ASSERT_EQ(e.code, 0) << kind << ": " << e.err;
+    EXPECT_NE(e.out.find("F1"), std::string::npos) << e.out;
+    EXPECT_NE(e.out.find("confusion (frames): TP"), std::string::npos) << e.out;
+    const CliResult d = Run("detect --model " + model + " --data " + P("d.h5") + " --runs 4 --out " + P("dec.csv"));
+    ASSERT_EQ(d.code, 0) << kind << ": " << d.err;
+    const auto rows = Lines(Slurp(P("dec.csv")));
+    ASSERT_GT(rows.size(), 100u);
+    EXPECT_EQ(rows[0], "run,frame,time_s,slip");
+    EXPECT_EQ(rows[1].rfind("4,0,0,", 0), 0u) << rows[1];
+  }
+}
+
+TEST_F(DetectCliTest, SameDataAndSeedGiveTheSameModel) {
+  ASSERT_EQ(Run("train svm --data " + P("d.h5") + " --runs 0-3 --seed 3 --out " + P("a.model")).code, 0);
+  ASSERT_EQ(Run("train svm --data " + P("d.h5") + " --runs 0-3 --seed 3 --out " + P("b.model")).code, 0);
+  EXPECT_EQ(Slurp(P("a.model")), Slurp(P("b.model")));
+}
+
+TEST_F(DetectCliTest, IncipientDetectWritesSlippingCounts) {
+  const CliResult d = Run("detect incipient --data " + P("d.h5") + " --window 5 --speed-thr-px 0.2 --count-thr 4 --out " +
+                          P("inc.csv"));
+  ASSERT_EQ(d.code, 0) << d.err;
+  const auto rows = Lines(Slurp(P("inc.csv")));
+  EXPECT_EQ(rows[0], "run,frame,time_s,slip,n_slipping");
+  const auto runs = LoadDatasetRuns(P("d.h5"), {});
+  size_t frames = 0;
+  for (const auto& r : runs) frames += r.frames.size();
+  EXPECT_EQ(rows.size(), frames + 1) << "one row per frame of every run";
+}
+
+TEST_F(DetectCliTest, RealTacTipCsvGoesThroughTheSameDetector) {
+  // A CSV recording made from run 4's frames gives the same decisions as the dataset.
+  ASSERT_EQ(Run("train threshold --data " + P("d.h5") + " --runs 0-3 --out " + P("t.model")).code, 0);
+  const auto runs = LoadDatasetRuns(P("d.h5"), {4});
+  WritePinCsv(P("rec.csv"), runs[0].frames);
+  ASSERT_EQ(Run("detect --model " + P("t.model") + " --data " + P("rec.csv") + " --out " + P("c.csv")).code, 0);
+  ASSERT_EQ(Run("detect --model " + P("t.model") + " --data " + P("d.h5") + " --runs 4 --out " + P("h.csv")).code, 0);
+  const auto c = Lines(Slurp(P("c.csv"))), h = Lines(Slurp(P("h.csv")));
+  ASSERT_EQ(c.size(), h.size());
+  for (size_t i = 1; i < c.size(); ++i) {
+    // Same frame, time and decision; only the run column differs (CSV input is run 0).
+    EXPECT_EQ(c[i].substr(c[i].find(',')), h[i].substr(h[i].find(','))) << "row " << i;
+  }
+}
+
+TEST_F(DetectCliTest, BadDetectorInputGetsOneLineAndExitCode2) {
+  std::ofstream(P("bad.model")) << "tactip-detector svm-rbf 1\nC banana\n";
+  std::ofstream(P("bad.csv")) << "frame,time_s,pin,x_px,y_px\n0,0.0,0,1,1\n0,0.0,1,2,2\n1,0.01,0,1,1\n";
+  std::ofstream(P("back.csv")) << "frame,time_s,pin,x_px,y_px\n0,0.02,0,1,1\n1,0.01,0,1,1\n";
+  std::ofstream(P("nan.csv")) << "frame,time_s,pin,x_px,y_px\n0,0.0,0,nan,1\n";
+  struct Case {
+    std::string args, fragment;
+  } cases[] = {
+      {"evaluate --model " + P("bad.model") + " --data " + P("d.h5"), "bad.model"},
+      {"evaluate --model " + P("missing.model") + " --data " + P("d.h5"), "missing.model"},
+      {"train svm --data " + P("d.h5") + " --runs 99 --out " + P("x.model"), "has no run 99"},
+      {"train svm --data " + P("d.h5") + " --runs 0-1 --features speed --out " + P("x.model"), "features 'speed'"},
+      {"train logreg --data " + P("d.h5") + " --c-grid 1,-2 --out " + P("x.model"), "--c-grid"},
+      {"detect --data " + P("d.h5") + " --out " + P("x.csv"), "needs --model"},
+      {"detect incipient --window 0 --data " + P("d.h5") + " --out " + P("x.csv"), "window = 0"},
+      {"detect incipient --data " + P("bad.csv") + " --out " + P("x.csv"), "frame 1 has 1 pins"},
+      {"detect incipient --data " + P("back.csv") + " --out " + P("x.csv"), "time not increasing"},
+      {"detect incipient --data " + P("nan.csv") + " --out " + P("x.csv"), "nan.csv"},
+  };
+  for (const auto& c : cases) {
+    const CliResult r = Run(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
+    EXPECT_EQ(Lines(r.err).size(), 1u) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.fragment), std::string::npos) << c.args << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(P("x.model")) || fs::exists(P("x.csv"))) << c.args;
+  }
+}
+
+TEST_F(DetectCliTest, BenchOnAGivenDatasetIsReproducible) {
+  const std::string common = "bench --dataset " + P("d.h5") + " --c-grid 1,10 --gamma-grid 0.25 --folds 2 --out ";
+  const CliResult a = Run(common + P("b1"));
+  ASSERT_EQ(a.code, 0) << a.err;
+  ASSERT_EQ(Run(common + P("b2")).code, 0);
+  for (const char* name : {"threshold", "logreg", "svm-linear", "svm-rbf", "incipient"}) {
+    EXPECT_NE(a.out.find(name), std::string::npos) << name;
+  }
+  // Every column but the two timing ones is identical between the two runs.
+  const auto r1 = Lines(Slurp(P("b1/bench.csv"))), r2 = Lines(Slurp(P("b2/bench.csv")));
+  ASSERT_EQ(r1.size(), 6u);
+  ASSERT_EQ(r1.size(), r2.size());
+  auto strip_timing = [](const std::string& row) {
+    std::vector<std::string> f;
+    std::stringstream ss(row);
+    std::string x;
+    while (std::getline(ss, x, ',')) f.push_back(x);
+    f.erase(f.begin() + 8, f.begin() + 10);  // us_per_frame_mean, us_per_frame_p99
+    std::string out;
+    for (const auto& y : f) out += y + ",";
+    return out;
+  };
+  for (size_t i = 0; i < r1.size(); ++i) EXPECT_EQ(strip_timing(r1[i]), strip_timing(r2[i]));
+  EXPECT_EQ(Slurp(P("b1/svm-rbf.model")), Slurp(P("b2/svm-rbf.model")));
+  const std::string json = Slurp(P("b1/bench.json"));
+  for (const char* key : {"\"dataset\"", "\"detectors\"", "\"f1\"", "\"precision\"", "\"recall\"", "\"accuracy\"",
+                          "\"delay_ms\"", "\"fp_per_min\"", "\"us_per_frame_mean\"", "\"us_per_frame_p99\""}) {
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  }
+}
+
+}  // namespace
+}  // namespace tactip
