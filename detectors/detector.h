@@ -98,8 +98,20 @@ struct LabeledRun {
   std::vector<PinFrame> frames;    ///< all frames in order
   int first_frame = 0;             ///< first frame of the labelled window (retraction start)
   int onset_frame = -1;            ///< first frame of gross slip (-1: the run has none)
+  /// First frame labelled slip for training and scoring (-1: onset_frame). Frames from
+  /// onset_frame up to it are transition frames, neither trained on nor scored.
+  int slip_start_frame = -1;
   double frame_rate_hz = 100.0;    ///< camera rate
 };
+
+/// How a frame takes part in training and scoring.
+enum class FrameRole {
+  kUnscored,  ///< before the labelled window, a transition frame, or past the slip frames
+  kStatic,    ///< before the onset
+  kSlip,      ///< one of the n_slip frames from the slip start
+};
+/// The role of frame k of `run` with n_slip labelled slip frames.
+FrameRole RoleOf(const LabeledRun& run, int k, int n_slip);
 
 /// How training frames are chosen and how hyperparameters are searched.
 struct TrainOptions {

@@ -94,6 +94,13 @@ bool VelocityFeatures::Update(const PinFrame& frame, Eigen::VectorXf& out) {
   return true;
 }
 
+FrameRole RoleOf(const LabeledRun& run, int k, int n_slip) {
+  if (k < run.first_frame) return FrameRole::kUnscored;
+  if (run.onset_frame < 0 || k < run.onset_frame) return FrameRole::kStatic;
+  const int start = run.slip_start_frame < 0 ? run.onset_frame : run.slip_start_frame;
+  return k >= start && k < start + n_slip ? FrameRole::kSlip : FrameRole::kUnscored;
+}
+
 TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOptions& opts) {
   if (opts.n_slip < 1 || opts.n_slip > 15) {
     throw DetectorInputError("n_slip = " + std::to_string(opts.n_slip) + ": must be in [1, 15]");
@@ -108,11 +115,10 @@ TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOpt
     // Stream every frame (features need the previous one), keep the labelled window.
     VelocityFeatures feat(opts.features);
     Eigen::VectorXf f;
-    const int end = run.onset_frame < 0 ? static_cast<int>(run.frames.size())
-                                        : std::min<int>(run.onset_frame + opts.n_slip, run.frames.size());
-    for (int k = 0; k < end; ++k) {
-      if (!feat.Update(run.frames[k], f) || k < run.first_frame) continue;
-      const bool slip = run.onset_frame >= 0 && k >= run.onset_frame;
+    for (int k = 0; k < static_cast<int>(run.frames.size()); ++k) {
+      const FrameRole role = RoleOf(run, k, opts.n_slip);
+      if (!feat.Update(run.frames[k], f) || role == FrameRole::kUnscored) continue;
+      const bool slip = role == FrameRole::kSlip;
       // Seeded downsampling of static frames: draw for every static frame.
       if (!slip) {
         const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;

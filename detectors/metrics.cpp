@@ -62,8 +62,8 @@ Evaluation Evaluate(Detector& det, const std::vector<LabeledRun>& runs, int n_sl
       if (has_onset && k >= run.onset_frame && re.detection_frame < 0 && d.slip) re.detection_frame = k;
 
       // Score the labelled window only.
-      if (k < run.first_frame) continue;
-      if (!has_onset || k < run.onset_frame) {
+      const FrameRole role = RoleOf(run, k, n_slip);
+      if (role == FrameRole::kStatic) {
         ++re.static_frames;
         if (d.slip) {
           ++re.confusion.fp;
@@ -71,7 +71,7 @@ Evaluation Evaluate(Detector& det, const std::vector<LabeledRun>& runs, int n_sl
         } else {
           ++re.confusion.tn;
         }
-      } else if (k < run.onset_frame + n_slip) {
+      } else if (role == FrameRole::kSlip) {
         if (d.slip) {
           ++re.confusion.tp;
         } else {

@@ -109,4 +109,26 @@ double ContactMeasure::Update(const PinFrame& frame) {
   return count > 0 ? sum / count : 0.0;
 }
 
+ResponseDetector::ResponseDetector(std::unique_ptr<Detector> inner, ResponseStrategy strategy)
+    : inner_(std::move(inner)), strategy_(strategy), one_(1, false) {
+  if (strategy_.n_sensors_total() != 1) {
+    throw DetectorInputError("response " + strategy_.ToString() + ": a single-sensor detector needs NSen = 1");
+  }
+}
+
+std::string ResponseDetector::name() const { return inner_->name() + "+" + strategy_.ToString(); }
+
+void ResponseDetector::Reset() {
+  inner_->Reset();
+  strategy_.Reset();
+}
+
+Decision ResponseDetector::Update(const PinFrame& frame) {
+  // The inner decision goes through the strategy; everything else is passed on.
+  Decision d = inner_->Update(frame);
+  one_[0] = d.slip;
+  d.slip = strategy_.Update(one_);
+  return d;
+}
+
 }  // namespace tactip

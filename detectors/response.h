@@ -2,6 +2,7 @@
 // Response strategies that turn per-sensor slip decisions into one action ("2Fr1Sen":
 // two consecutive slip frames on at least one sensor), and the contact measure d(t).
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,25 @@ class ContactMeasure {
  private:
   bool has_ref_ = false;
   PinFrame ref_;
+};
+
+/// A single-sensor detector whose decisions pass through a response strategy (e.g.
+/// "2Fr1Sen": act on two consecutive slip frames). Wraps, does not own, the inner model's
+/// training; Save writes the inner model only.
+class ResponseDetector : public Detector {
+ public:
+  /// Takes ownership of `inner`; `strategy` must be for one sensor.
+  ResponseDetector(std::unique_ptr<Detector> inner, ResponseStrategy strategy);
+  /// "<inner name>+<strategy>", e.g. "svm-rbf+2Fr1Sen".
+  std::string name() const override;
+  void Reset() override;
+  Decision Update(const PinFrame& frame) override;
+  void Save(const std::string& path) const override { inner_->Save(path); }
+
+ private:
+  std::unique_ptr<Detector> inner_;
+  ResponseStrategy strategy_;
+  std::vector<bool> one_;  // the single sensor's decision
 };
 
 }  // namespace tactip

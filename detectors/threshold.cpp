@@ -119,11 +119,10 @@ std::unique_ptr<ThresholdDetector> ThresholdDetector::Train(const std::vector<La
   for (const LabeledRun& run : runs) {
     VelocityFeatures feat(FeatureSet::kDr);
     Eigen::VectorXf f;
-    const int end = run.onset_frame < 0 ? static_cast<int>(run.frames.size())
-                                        : std::min<int>(run.onset_frame + opts.n_slip, run.frames.size());
-    for (int k = 0; k < end; ++k) {
-      if (!feat.Update(run.frames[k], f) || k < run.first_frame) continue;
-      const bool slip = run.onset_frame >= 0 && k >= run.onset_frame;
+    for (int k = 0; k < static_cast<int>(run.frames.size()); ++k) {
+      const FrameRole role = RoleOf(run, k, opts.n_slip);
+      if (!feat.Update(run.frames[k], f) || role == FrameRole::kUnscored) continue;
+      const bool slip = role == FrameRole::kSlip;
       if (!slip) {
         const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;
         if (u >= opts.static_fraction) continue;

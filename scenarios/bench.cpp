@@ -25,7 +25,11 @@ HardwareReference Reference(const std::string& name) {
       {"threshold", {"0.753 (mini)", "", ""}},
       {"logreg", {"0.957 (mini)", "", ""}},
       {"svm-linear", {"", "95.07 % (127-pin)", ""}},
+      {"svm-linear/dr", {"", "94.66 % (127-pin)", ""}},
+      {"svm-linear/dtheta", {"", "70.58 % (127-pin)", ""}},
       {"svm-rbf", {"0.972 (mini)", "99.11 % (127-pin)", "3000 us"}},
+      {"svm-rbf/dr", {"", "98.95 % (127-pin)", ""}},
+      {"svm-rbf/dtheta", {"", "97.21 % (127-pin)", ""}},
       {"incipient", {"", "", "17/20 caught (v2)"}},
   };
   auto it = table.find(name);
@@ -70,7 +74,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
     r.speed_mm_s = std::nan("");
   }
   // Disjoint halves: first half trains, second half tests.
-  std::vector<LabeledRun> all = LoadDatasetRuns(r.dataset_path, {});
+  std::vector<LabeledRun> all = LoadDatasetRuns(r.dataset_path, {}, opts.score_onset_frame);
   if (all.size() < 2) throw InputError(fmt::format("dataset '{}' has fewer than 2 runs", r.dataset_path));
   const size_t half = all.size() / 2;
   std::vector<LabeledRun> train(all.begin(), all.begin() + static_cast<long>(half));
@@ -86,32 +90,49 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   log(fmt::format("training set: {} frames ({} slip) from runs {}-{}", r.train_rows, r.train_slip_rows,
                   r.train_runs.front(), r.train_runs.back()));
 
-  // Train, save and evaluate every detector on the held-out runs.
-  auto finish = [&](Detector& det, bool trained) {
+  // Train, save and evaluate every detector on the held-out runs. Feature variants
+  // other than the configured one are labelled "name/features".
+  auto finish = [&](Detector& det, const std::string& label, bool trained) {
     BenchRow row;
     if (trained) {
-      row.model_path = (std::filesystem::path(opts.out_dir) / (det.name() + ".model")).string();
+      std::string file = label;
+      for (char& ch : file) ch = ch == '/' ? '-' : ch;
+      row.model_path = (std::filesystem::path(opts.out_dir) / (file + ".model")).string();
       det.Save(row.model_path);
     }
     row.eval = Evaluate(det, test, topt.n_slip);
-    row.hardware = Reference(det.name());
-    log(fmt::format("{}: F1 {:.3f}", det.name(), row.eval.confusion.F1()));
+    row.eval.detector = label;
+    row.hardware = Reference(label);
+    log(fmt::format("{}: F1 {:.3f}", label, row.eval.confusion.F1()));
     r.rows.push_back(std::move(row));
   };
   log("training threshold");
-  finish(*ThresholdDetector::Train(train, topt), true);
+  finish(*ThresholdDetector::Train(train, topt), "threshold", true);
   log("training logreg (grouped CV over C)");
-  finish(*LogRegDetector::Train(ts, topt), true);
-  log("training svm-linear (grouped CV over C)");
-  finish(*SvmDetector::Train(ts, SvmDetector::Kernel::kLinear, topt), true);
-  log("training svm-rbf (grouped CV over C and gamma)");
-  finish(*SvmDetector::Train(ts, SvmDetector::Kernel::kRbf, topt), true);
+  finish(*LogRegDetector::Train(ts, topt), "logreg", true);
+  // SVMs on the configured features, then on the two single-feature variants.
+  std::vector<FeatureSet> variants = {topt.features};
+  for (FeatureSet f : {FeatureSet::kDrDtheta, FeatureSet::kDr, FeatureSet::kDtheta}) {
+    if (f != topt.features) variants.push_back(f);
+  }
+  for (auto kernel : {SvmDetector::Kernel::kLinear, SvmDetector::Kernel::kRbf}) {
+    const std::string base = kernel == SvmDetector::Kernel::kRbf ? "svm-rbf" : "svm-linear";
+    for (FeatureSet f : variants) {
+      TrainOptions vopt = topt;
+      vopt.features = f;
+      const std::string label = f == topt.features ? base : base + "/" + ToString(f);
+      log(fmt::format("training {} (grouped CV over C{})", label,
+                      kernel == SvmDetector::Kernel::kRbf ? " and gamma" : ""));
+      const TrainingSet vts = f == topt.features ? TrainingSet{} : BuildTrainingSet(train, vopt);
+      finish(*SvmDetector::Train(f == topt.features ? ts : vts, kernel, vopt), label, true);
+    }
+  }
   IncipientParams ip;
   ip.window = opts.incipient_window;
   ip.speed_thr_px = opts.incipient_speed_thr_px;
   ip.count_thr = opts.incipient_count_thr;
   IncipientDetector inc(ip);
-  finish(inc, false);
+  finish(inc, "incipient", false);
 
   WriteFileAtomic((std::filesystem::path(opts.out_dir) / "bench.json").string(), BenchJson(r));
   WriteFileAtomic((std::filesystem::path(opts.out_dir) / "bench.csv").string(), BenchCsv(r));
@@ -122,14 +143,14 @@ std::string FormatBenchTable(const BenchResult& r) {
   std::string out = fmt::format("dataset {} | train runs {}-{} ({} frames, {} slip) | test runs {}-{}\n",
                                 r.dataset_path, r.train_runs.front(), r.train_runs.back(), r.train_rows,
                                 r.train_slip_rows, r.test_runs.front(), r.test_runs.back());
-  out += fmt::format("{:<11} {:>6} {:>6} {:>6} {:>7} {:>7} {:>7} {:>8} {:>9} {:>9} | {:>13} {:>17} {:>17}\n",
+  out += fmt::format("{:<17} {:>6} {:>6} {:>6} {:>7} {:>7} {:>7} {:>8} {:>9} {:>9} | {:>13} {:>17} {:>17}\n",
                      "detector", "F1", "prec", "recall", "acc %", "delay", "delay", "FP/min", "us/frame",
                      "us p99", "hw F1", "hw frames correct", "hw other");
-  out += fmt::format("{:<11} {:>6} {:>6} {:>6} {:>7} {:>7} {:>7} {:>8} {:>9} {:>9} | {:>13} {:>17} {:>17}\n", "",
+  out += fmt::format("{:<17} {:>6} {:>6} {:>6} {:>7} {:>7} {:>7} {:>8} {:>9} {:>9} | {:>13} {:>17} {:>17}\n", "",
                      "", "", "", "", "frames", "ms", "static", "mean", "", "", "", "");
   for (const auto& row : r.rows) {
     const Evaluation& e = row.eval;
-    out += fmt::format("{:<11} {:>6.3f} {:>6.3f} {:>6.3f} {:>7.2f} {:>7} {:>7} {:>8} {:>9.1f} {:>9.1f} | {:>13} {:>17} {:>17}\n",
+    out += fmt::format("{:<17} {:>6.3f} {:>6.3f} {:>6.3f} {:>7.2f} {:>7} {:>7} {:>8} {:>9.1f} {:>9.1f} | {:>13} {:>17} {:>17}\n",
                        e.detector, e.confusion.F1(), e.confusion.Precision(), e.confusion.Recall(),
                        100.0 * e.confusion.Accuracy(), Num(e.delay_frames_mean, "{:.1f}"),
                        Num(e.delay_ms_mean, "{:.0f}"), Num(e.fp_per_min, "{:.2f}"), e.us_per_frame_mean,

@@ -23,6 +23,7 @@ struct BenchOptions {
   std::uint64_t seed = 2026;  ///< dataset and training seed
   int jobs = 0;             ///< generation threads (0 = all cores)
   TrainOptions train;       ///< training-set construction and CV grids
+  bool score_onset_frame = false;  ///< label the frame spanning the onset as slip (else skipped)
   int incipient_window = 5;          ///< incipient detector W (hardware value)
   double incipient_speed_thr_px = 0.2;  ///< incipient detector s_thr (hardware value)
   int incipient_count_thr = 4;       ///< incipient detector I_thr (hardware value)

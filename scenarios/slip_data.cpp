@@ -37,7 +37,8 @@ std::vector<int> ParseRunList(const std::string& text) {
   return {out.begin(), out.end()};
 }
 
-std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs) {
+std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
+                                        bool score_onset_frame) {
   const DatasetReader reader(path);
   std::vector<int> wanted = runs.empty() ? reader.run_indices() : runs;
   std::vector<LabeledRun> out;
@@ -78,6 +79,10 @@ std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vect
       for (size_t f = 0; f < T; ++f) {
         if (rec.time[f] >= onset - 1e-9) {
           run.onset_frame = static_cast<int>(f);
+          // The onset frame's velocity covers both sides of the onset unless the onset
+          // fell exactly on the previous frame time.
+          const bool straddles = f > 0 && onset > rec.time[f - 1] + 1e-9;
+          run.slip_start_frame = run.onset_frame + (straddles && !score_onset_frame ? 1 : 0);
           break;
         }
       }

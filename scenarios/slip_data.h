@@ -15,9 +15,12 @@ std::vector<int> ParseRunList(const std::string& text);
 
 /// Reads runs of an HDF5 dataset as labelled frame sequences. `runs` empty = all runs.
 /// The labelled window starts at the run's retraction; the onset frame is the first
-/// frame at or after `gross_slip_onset_s`. Throws InputError for a missing/corrupt file
+/// frame at or after `gross_slip_onset_s`. That frame's velocity spans the onset (part
+/// static, part slip), so unless `score_onset_frame` is set it is a transition frame and
+/// the slip frames start at the next one. Throws InputError for a missing/corrupt file
 /// or a run that is not in the dataset.
-std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs);
+std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
+                                        bool score_onset_frame = false);
 
 /// Reads pin frames from the project's HDF5 datasets or from a real-TacTip CSV
 /// recording (by extension: .h5/.hdf5 or .csv). CSV input is one run (index 0) with no

@@ -12,6 +12,7 @@
 #include "detectors/incipient.h"
 #include "detectors/logreg.h"
 #include "detectors/metrics.h"
+#include "detectors/response.h"
 #include "detectors/svm.h"
 #include "detectors/threshold.h"
 #include "scenarios/bench.h"
@@ -49,8 +50,12 @@ struct TrainArgs {
   unsigned long long seed = 1;
   int folds = 4;
   std::string c_grid, gamma_grid;
+  bool score_onset_frame = false;
 
   void Add(CLI::App* c, bool with_seed = true) {
+    c->add_flag("--score-onset-frame", score_onset_frame,
+                "Label the frame whose velocity spans the onset as slip (default: it is a transition frame, "
+                "neither trained on nor scored).");
     c->add_option("--features", features, "Velocity features: drdtheta (default), dr or dtheta.");
     c->add_option("--n-slip", n_slip, "Frames after the ground-truth onset labelled slip (1-15, default 4).")
         ->check(CLI::Range(1, 15));
@@ -75,18 +80,29 @@ struct TrainArgs {
   }
 };
 
-// Writes one CSV row per frame of every run: run,frame,time_s,slip[,n_slipping].
-std::string DecisionsCsv(Detector& det, const std::vector<LabeledRun>& runs, bool with_count) {
-  std::string out = with_count ? "run,frame,time_s,slip,n_slipping\n" : "run,frame,time_s,slip\n";
+// Writes one CSV row per frame of every run: run,frame,time_s,slip[,n_slipping][,d_px].
+std::string DecisionsCsv(Detector& det, const std::vector<LabeledRun>& runs, bool with_count, bool with_contact) {
+  std::string out = std::string("run,frame,time_s,slip") + (with_count ? ",n_slipping" : "") +
+                    (with_contact ? ",d_px" : "") + "\n";
+  ContactMeasure contact;
   for (const LabeledRun& run : runs) {
     det.Reset();
+    contact.Reset();
     for (size_t k = 0; k < run.frames.size(); ++k) {
       const Decision d = det.Update(run.frames[k]);
       out += fmt::format("{},{},{},{}", run.run, k, run.frames[k].time_s, d.slip ? 1 : 0);
-      out += with_count ? fmt::format(",{}\n", d.n_slipping) : std::string("\n");
+      if (with_count) out += fmt::format(",{}", d.n_slipping);
+      if (with_contact) out += fmt::format(",{}", contact.Update(run.frames[k]));
+      out += "\n";
     }
   }
   return out;
+}
+
+// Wraps a detector in a response strategy when one is given ("2Fr1Sen").
+std::unique_ptr<Detector> WithResponse(std::unique_ptr<Detector> det, const std::string& response) {
+  if (response.empty()) return det;
+  return std::make_unique<ResponseDetector>(std::move(det), ResponseStrategy::Parse(response, 1));
 }
 
 }  // namespace
@@ -99,6 +115,9 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     int window = 5, count_thr = 4;
     double speed_thr = 0.2;
     bool per_run = false;
+    bool score_onset_frame = false;
+    bool contact_measure = false;
+    std::string response;
     // bench
     std::string bench_out = "bench-results", bench_dataset, config;
     std::vector<std::string> sets;
@@ -128,6 +147,10 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
   eval->add_option("--n-slip", s->train.n_slip, "Frames after the onset scored as slip (default 4).")
       ->check(CLI::Range(1, 15));
   eval->add_flag("--per-run", s->per_run, "Also print one line per run.");
+  eval->add_option("--response", s->response,
+                   "Act only on a response strategy, e.g. 2Fr1Sen (two consecutive slip frames).");
+  eval->add_flag("--score-onset-frame", s->score_onset_frame,
+                 "Score the frame whose velocity spans the onset as slip (default: not scored).");
 
   // tactip detect
   auto* detect = app.add_subcommand(
@@ -143,6 +166,10 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
   detect->add_option("--window", s->window, "Incipient: moving-average window W in frames (default 5).");
   detect->add_option("--speed-thr-px", s->speed_thr, "Incipient: speed threshold s_thr in px/frame (default 0.2).");
   detect->add_option("--count-thr", s->count_thr, "Incipient: pins needed to declare incipient slip (default 4).");
+  detect->add_option("--response", s->response,
+                     "Act only on a response strategy, e.g. 2Fr1Sen (two consecutive slip frames).");
+  detect->add_flag("--contact-measure", s->contact_measure,
+                   "Add a column d_px: mean pin displacement from the run's first (no-contact) frame.");
 
   // tactip bench
   auto* bench = app.add_subcommand(
@@ -162,7 +189,7 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     const std::vector<int> runs = s->runs.empty() ? std::vector<int>{} : ParseRunList(s->runs);
     if (*train) {
       const TrainOptions opts = s->train.Options();
-      const std::vector<LabeledRun> data = LoadDatasetRuns(s->data, runs);
+      const std::vector<LabeledRun> data = LoadDatasetRuns(s->data, runs, s->train.score_onset_frame);
       std::unique_ptr<Detector> det;
       std::string kind = s->kind == "svm" ? "svm-" + s->kernel : s->kind;
       if (kind == "threshold") {
@@ -188,8 +215,8 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
       return 0;
     }
     if (*eval) {
-      std::unique_ptr<Detector> det = LoadDetector(s->model);
-      const Evaluation e = Evaluate(*det, LoadDatasetRuns(s->data, runs), s->train.n_slip);
+      std::unique_ptr<Detector> det = WithResponse(LoadDetector(s->model), s->response);
+      const Evaluation e = Evaluate(*det, LoadDatasetRuns(s->data, runs, s->score_onset_frame), s->train.n_slip);
       std::printf("%s", FormatEvaluation(e, s->per_run).c_str());
       return 0;
     }
@@ -206,10 +233,12 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
         if (s->model.empty()) throw InputError("detect needs --model, or 'incipient' as the detector kind");
         det = LoadDetector(s->model);
       }
+      const bool incipient = det->name() == "incipient";
+      det = WithResponse(std::move(det), s->response);
       const std::vector<LabeledRun> data = LoadFrames(s->data, runs);
       size_t frames = 0;
       for (const auto& r : data) frames += r.frames.size();
-      WriteFileAtomic(s->out, DecisionsCsv(*det, data, det->name() == "incipient"));
+      WriteFileAtomic(s->out, DecisionsCsv(*det, data, incipient, s->contact_measure));
       std::fprintf(stderr, "wrote %s: %zu frames of %zu run(s) through %s\n", s->out.c_str(), frames, data.size(),
                    det->name().c_str());
       return 0;
@@ -223,6 +252,7 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
       o.seed = s->bench_seed;
       o.jobs = s->jobs;
       o.train = s->train.Options();
+      o.score_onset_frame = s->train.score_onset_frame;
       o.stop = stop;
       o.log = [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); };
       const RailScenarioConfig cfg = LoadConfig<RailScenarioConfig>(s->config, s->sets);

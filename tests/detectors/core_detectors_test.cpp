@@ -670,5 +670,25 @@ TEST(ContactMeasureTest, MeanDisplacementFromTheFirstFrame) {
   EXPECT_THROW(cm.Update(Frame(base.topRows(5), 0.02)), DetectorInputError);
 }
 
+TEST(ResponseDetectorTest, TwoFrameStrategyDelaysTheActionByOneFrame) {
+  // A threshold of 0.5 px on a 3 px co-linear jump lasting frames 10..12.
+  std::vector<PinFrame> frames;
+  auto p = Lattice19();
+  for (int k = 0; k < 16; ++k) {
+    if (k >= 10 && k <= 12) p.col(0).array() += 3.0f;
+    frames.push_back(Frame(p, 0.01 * k));
+  }
+  ThresholdDetector plain(0.5);
+  ResponseDetector twice(std::make_unique<ThresholdDetector>(0.5), ResponseStrategy::Parse("2Fr1Sen", 1));
+  EXPECT_EQ(twice.name(), "threshold+2Fr1Sen");
+  for (int k = 0; k < 16; ++k) {
+    const bool a = plain.Update(frames[k]).slip, b = twice.Update(frames[k]).slip;
+    EXPECT_EQ(a, k >= 10 && k <= 12) << "frame " << k;
+    EXPECT_EQ(b, k >= 11 && k <= 12) << "frame " << k;
+  }
+  EXPECT_THROW(ResponseDetector(std::make_unique<ThresholdDetector>(0.5), ResponseStrategy::Parse("1Fr2Sen", 3)),
+               DetectorInputError);
+}
+
 }  // namespace
 }  // namespace tactip

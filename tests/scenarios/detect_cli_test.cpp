@@ -127,6 +127,24 @@ TEST_F(DetectCliTest, IncipientDetectWritesSlippingCounts) {
   EXPECT_EQ(rows.size(), frames + 1) << "one row per frame of every run";
 }
 
+TEST_F(DetectCliTest, ResponseStrategyAndContactMeasureOptions) {
+  ASSERT_EQ(Run("train threshold --data " + P("d.h5") + " --runs 0-3 --out " + P("r.model")).code, 0);
+  const CliResult d = Run("detect --model " + P("r.model") + " --data " + P("d.h5") +
+                          " --runs 4 --response 2Fr1Sen --contact-measure --out " + P("r.csv"));
+  ASSERT_EQ(d.code, 0) << d.err;
+  EXPECT_NE(d.err.find("threshold+2Fr1Sen"), std::string::npos) << d.err;
+  const auto rows = Lines(Slurp(P("r.csv")));
+  EXPECT_EQ(rows[0], "run,frame,time_s,slip,d_px");
+  EXPECT_EQ(rows[1], "4,0,0,0,0") << "first frame: no decision, no displacement";
+  const CliResult e = Run("evaluate --model " + P("r.model") + " --data " + P("d.h5") + " --runs 4-5 --response 2Fr1Sen");
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_NE(e.out.find("detector threshold+2Fr1Sen"), std::string::npos) << e.out;
+  const CliResult bad = Run("detect --model " + P("r.model") + " --data " + P("d.h5") + " --response 2Fr --out " +
+                            P("x.csv"));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("2Fr"), std::string::npos) << bad.err;
+}
+
 TEST_F(DetectCliTest, RealTacTipCsvGoesThroughTheSameDetector) {
   // A CSV recording made from run 4's frames gives the same decisions as the dataset.
   ASSERT_EQ(Run("train threshold --data " + P("d.h5") + " --runs 0-3 --out " + P("t.model")).code, 0);
@@ -175,12 +193,12 @@ TEST_F(DetectCliTest, BenchOnAGivenDatasetIsReproducible) {
   const CliResult a = Run(common + P("b1"));
   ASSERT_EQ(a.code, 0) << a.err;
   ASSERT_EQ(Run(common + P("b2")).code, 0);
-  for (const char* name : {"threshold", "logreg", "svm-linear", "svm-rbf", "incipient"}) {
+  for (const char* name : {"threshold", "logreg", "svm-linear", "svm-rbf", "svm-rbf/dtheta", "incipient"}) {
     EXPECT_NE(a.out.find(name), std::string::npos) << name;
   }
   // Every column but the two timing ones is identical between the two runs.
   const auto r1 = Lines(Slurp(P("b1/bench.csv"))), r2 = Lines(Slurp(P("b2/bench.csv")));
-  ASSERT_EQ(r1.size(), 6u);
+  ASSERT_EQ(r1.size(), 10u) << "header + 9 detectors";
   ASSERT_EQ(r1.size(), r2.size());
   auto strip_timing = [](const std::string& row) {
     std::vector<std::string> f;
