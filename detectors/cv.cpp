@@ -2,6 +2,8 @@
 
 #include "detectors/cv.h"
 
+#include <fstream>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -224,18 +226,6 @@ void CheckPositiveGrid(const std::vector<double>& values, std::string_view what)
   }
 }
 
-std::string RoundTripText(double v) {
-  char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, res.ptr);
-}
-
-std::string RoundTripText(float v) {
-  char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, res.ptr);
-}
-
 void AppendStandardizer(const Standardizer& s, std::string& out) {
   out += "mean";
   for (Eigen::Index j = 0; j < s.mean.size(); ++j) out += " " + RoundTripText(s.mean[j]);
@@ -352,5 +342,13 @@ TempFile::TempFile() {
 }
 
 TempFile::~TempFile() { std::remove(path_.c_str()); }
+
+void TempFile::Write(const std::string& text, const std::string& model_path) const {
+  std::ofstream out(path_, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out.flush()) {
+    throw DetectorInputError("model '" + model_path + "': cannot write temporary file '" + path_ + "'");
+  }
+}
 
 }  // namespace tactip

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "detectors/detector.h"
+#include "detectors/text_io.h"
 
 namespace tactip {
 
@@ -90,10 +91,6 @@ void CheckPositiveGrid(const std::vector<double>& values, std::string_view what)
 
 // ---- Model-file helpers shared by the trained detectors ---------------------------------
 
-/// Shortest decimal text that reads back as exactly `v` (std::to_chars).
-std::string RoundTripText(double v);
-/// Shortest decimal text that reads back as exactly `v` (std::to_chars).
-std::string RoundTripText(float v);
 
 /// Appends "mean v1 v2 ...\ninv_std v1 v2 ...\n" (round-trip exact) to `out`.
 void AppendStandardizer(const Standardizer& s, std::string& out);
@@ -150,6 +147,9 @@ class TempFile {
   TempFile& operator=(const TempFile&) = delete;
   /// Path of the file.
   const std::string& path() const { return path_; }
+  /// Replaces the file's contents with `text`; throws DetectorInputError naming the
+  /// model file `model_path` if it cannot.
+  void Write(const std::string& text, const std::string& model_path) const;
 
  private:
   std::string path_;

@@ -15,21 +15,6 @@ namespace {
 
 constexpr const char* kHeader = "tactip-detector incipient 1";
 
-/// Parses a whole token as a number of type T; false on anything else.
-template <typename T>
-bool ParseNumber(const std::string& s, T& out) {
-  const char* end = s.data() + s.size();
-  const auto [p, ec] = std::from_chars(s.data(), end, out);
-  return ec == std::errc() && p == end;
-}
-
-/// Shortest text that reads back as exactly `v`.
-std::string RoundTrip(double v) {
-  char buf[64];
-  const auto [p, ec] = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, p);
-}
-
 }  // namespace
 
 IncipientDetector::IncipientDetector(const IncipientParams& params) : params_(params) {
@@ -37,7 +22,7 @@ IncipientDetector::IncipientDetector(const IncipientParams& params) : params_(pa
     throw DetectorInputError("window = " + std::to_string(params.window) + ": must be >= 1");
   }
   if (!(params.speed_thr_px > 0.0) || !std::isfinite(params.speed_thr_px)) {
-    throw DetectorInputError("speed_thr_px = " + RoundTrip(params.speed_thr_px) + ": must be finite and > 0");
+    throw DetectorInputError("speed_thr_px = " + RoundTripText(params.speed_thr_px) + ": must be finite and > 0");
   }
   if (params.count_thr < 1) {
     throw DetectorInputError("count_thr = " + std::to_string(params.count_thr) + ": must be >= 1");
@@ -148,7 +133,7 @@ Decision IncipientDetector::Update(const PinFrame& frame) {
 void IncipientDetector::Save(const std::string& path) const {
   std::string text = std::string(kHeader) + "\n";
   text += "window " + std::to_string(params_.window) + "\n";
-  text += "speed_thr_px " + RoundTrip(params_.speed_thr_px) + "\n";
+  text += "speed_thr_px " + RoundTripText(params_.speed_thr_px) + "\n";
   text += "count_thr " + std::to_string(params_.count_thr) + "\n";
   WriteTextAtomic(path, text);
 }
@@ -181,13 +166,13 @@ std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& pa
     bool ok = false;
     if (key == "window") {
       seen = &have_window;
-      ok = ParseNumber(value, p.window);
+      ok = ParseWhole(value, p.window);
     } else if (key == "speed_thr_px") {
       seen = &have_speed;
-      ok = ParseNumber(value, p.speed_thr_px);
+      ok = ParseWhole(value, p.speed_thr_px);
     } else if (key == "count_thr") {
       seen = &have_count;
-      ok = ParseNumber(value, p.count_thr);
+      ok = ParseWhole(value, p.count_thr);
     } else {
       throw DetectorInputError(at + "unknown key '" + key + "'");
     }

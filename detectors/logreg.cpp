@@ -139,11 +139,7 @@ std::unique_ptr<LogRegDetector::Impl> LogRegDetector::MakeImpl(FeatureSet featur
   // Let liblinear read its model from a temporary file.
   {
     const TempFile tmp;
-    {
-      std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
-      out << m->liblinear_text;
-      if (!out.flush()) throw DetectorInputError("model '" + path + "': cannot write temporary file '" + tmp.path() + "'");
-    }
+    tmp.Write(m->liblinear_text, path);
     SilenceLiblinear();
     m->model.reset(::load_model(tmp.path().c_str()));
   }

@@ -217,11 +217,7 @@ std::unique_ptr<SvmDetector::Impl> SvmDetector::MakeImpl(Kernel kernel, FeatureS
   // Let libsvm read its model from a temporary file.
   {
     const TempFile tmp;
-    {
-      std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
-      out << m->libsvm_text;
-      if (!out.flush()) throw DetectorInputError("model '" + path + "': cannot write temporary file '" + tmp.path() + "'");
-    }
+    tmp.Write(m->libsvm_text, path);
     SilenceLibsvm();
     m->model.reset(svm_load_model(tmp.path().c_str()));
   }

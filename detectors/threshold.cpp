@@ -17,20 +17,6 @@ namespace {
 
 constexpr const char* kHeader = "tactip-detector threshold 1";
 
-/// Parses a whole token as a double (round-trip exact); false on anything else.
-bool ParseDouble(const std::string& s, double& out) {
-  const char* end = s.data() + s.size();
-  const auto [p, ec] = std::from_chars(s.data(), end, out);
-  return ec == std::errc() && p == end;
-}
-
-/// Shortest text that reads back as exactly `v`.
-std::string RoundTrip(double v) {
-  char buf[64];
-  const auto [p, ec] = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, p);
-}
-
 /// F1 = 2 tp / (2 tp + fp + fn); 0 when undefined.
 double F1Score(long tp, long fp, long fn) {
   const long den = 2 * tp + fp + fn;
@@ -41,7 +27,7 @@ double F1Score(long tp, long fp, long fn) {
 
 ThresholdDetector::ThresholdDetector(double threshold_px) : threshold_px_(threshold_px) {
   if (!std::isfinite(threshold_px) || threshold_px < 0.0) {
-    throw DetectorInputError("threshold_px = " + RoundTrip(threshold_px) + ": must be finite and >= 0");
+    throw DetectorInputError("threshold_px = " + RoundTripText(threshold_px) + ": must be finite and >= 0");
   }
 }
 
@@ -56,7 +42,7 @@ Decision ThresholdDetector::Update(const PinFrame& frame) {
 }
 
 void ThresholdDetector::Save(const std::string& path) const {
-  WriteTextAtomic(path, std::string(kHeader) + "\nthreshold_px " + RoundTrip(threshold_px_) + "\n");
+  WriteTextAtomic(path, std::string(kHeader) + "\nthreshold_px " + RoundTripText(threshold_px_) + "\n");
 }
 
 std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& path) {
@@ -88,7 +74,7 @@ std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& pa
       throw DetectorInputError(where + "line " + std::to_string(line_no) + ": unknown key '" + key + "'");
     }
     if (have_t) throw DetectorInputError(where + "line " + std::to_string(line_no) + ": duplicate threshold_px");
-    if (!ParseDouble(value, t)) {
+    if (!ParseWhole(value, t)) {
       throw DetectorInputError(where + "line " + std::to_string(line_no) + ": threshold_px '" + value +
                                "' is not a number");
     }

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_helpers.h"
 #include "sim/simulation.h"
 
 namespace fs = std::filesystem;
@@ -19,17 +20,8 @@ namespace fs = std::filesystem;
 namespace tactip {
 namespace {
 
-struct CliResult {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::CliResult;
+using testing::Slurp;
 
 class CliTest : public ::testing::Test {
  protected:
@@ -41,19 +33,7 @@ class CliTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  CliResult Run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(TACTIP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string() +
-                            " < /dev/null";
-    const int status = std::system(cmd.c_str());
-    CliResult r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = Slurp(out);
-    r.err = Slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
+  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
   // Files in the test folder other than the ones named.
   size_t FileCount() const {
     size_t n = 0;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "detectors/pin_csv.h"
+#include "cli_helpers.h"
 #include "scenarios/slip_data.h"
 #include "sim/config.h"
 
@@ -21,17 +22,8 @@ namespace fs = std::filesystem;
 namespace tactip {
 namespace {
 
-struct CliResult {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::CliResult;
+using testing::Slurp;
 
 std::vector<std::string> Lines(const std::string& s) {
   std::vector<std::string> out;
@@ -55,17 +47,7 @@ class DetectCliTest : public ::testing::Test {
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
-  static CliResult Run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd =
-        std::string(TACTIP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string() + " < /dev/null";
-    const int status = std::system(cmd.c_str());
-    CliResult r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = Slurp(out);
-    r.err = Slurp(err);
-    return r;
-  }
+  static CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
   static std::string P(const std::string& name) { return (dir_ / name).string(); }
 
   static fs::path dir_;

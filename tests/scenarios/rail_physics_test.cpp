@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <ostream>
 
 #include "scenarios/rail.h"
 
@@ -31,6 +32,12 @@ RailScenarioConfig Exact(double mass_kg, double mu, double speed_mm_s) {
 struct Case {
   double mass_kg, mu, speed_mm_s, depth_mm, rail_friction_N;
 };
+
+// Readable parameter in test output.
+void PrintTo(const Case& k, std::ostream* os) {
+  *os << "m=" << k.mass_kg << " kg, mu=" << k.mu << ", v=" << k.speed_mm_s << " mm/s, depth=" << k.depth_mm
+      << " mm, F_rail=" << k.rail_friction_N << " N";
+}
 
 class CoulombOnsetTest : public ::testing::TestWithParam<Case> {};
 

@@ -1,0 +1,44 @@
+#pragma once
+// Running the tactip binary from tests: exit code, stdout and stderr.
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace tactip::testing {
+
+/// What one command printed and returned.
+struct CliResult {
+  int code = -1;     ///< exit code (-1 if killed by a signal)
+  std::string out;   ///< standard output
+  std::string err;   ///< standard error
+};
+
+/// Whole file as text ("" if missing).
+inline std::string Slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Runs `tactip ARGS` with no stdin; captures output through files in `scratch`.
+inline CliResult RunTactip(const std::string& args, const std::filesystem::path& scratch) {
+  const auto out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+  const std::string cmd =
+      std::string(TACTIP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string() + " < /dev/null";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = Slurp(out);
+  r.err = Slurp(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
+}
+
+}  // namespace tactip::testing
