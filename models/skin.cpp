@@ -111,6 +111,7 @@ double SkinMechanics::StiffestOmega() const {
 
 std::string SkinNames::PinBody(int i) { return fmt::format("pin{}", i); }
 std::string SkinNames::PinJoint(int i) { return fmt::format("pin{}_n", i); }
+std::string SkinNames::PinShearJoint(int i, char axis) { return fmt::format("pin{}_t{}", i, axis); }
 std::string SkinNames::PinGeom(int i) { return fmt::format("pin{}_pad", i); }
 std::string SkinNames::PinSite(int i) { return fmt::format("pin{}_inner", i); }
 std::string SkinNames::PinOuterSite(int i) { return fmt::format("pin{}_outer", i); }
@@ -136,7 +137,9 @@ SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, c
                             lattice.size(), mech.k_normal_N_m, mech.k_shear_N_m, mech.k_bend_N_m, mech.membrane_N_m));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
+  const bool coupled = skin.coupling == "shell";
   for (const char* axis : {"y", "z"}) {
+    if (!coupled) break;  // uncoupled lattice: the shell is fixed, pins shear on their own
     shell.Add("joint")
         .Set("name", std::string("skin_shear_") + axis)
         .Set("type", "slide")
@@ -160,6 +163,18 @@ SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, c
         .Set("axis", std::vector<double>{1, 0, 0})
         .Set("stiffness", mech.k_normal_N_m)
         .Set("damping", mech.pin_damping_Ns_m);
+    if (!coupled) {
+      // Brush model: each pin's own gel shear springs.
+      const double c_shear = 2.0 * skin.shear_damping_ratio * std::sqrt(mech.k_shear_N_m * mech.pin_mass_kg);
+      for (char axis : {'y', 'z'}) {
+        b.Add("joint")
+            .Set("name", SkinNames::PinShearJoint(i, axis))
+            .Set("type", "slide")
+            .Set("axis", axis == 'y' ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
+            .Set("stiffness", mech.k_shear_N_m)
+            .Set("damping", c_shear);
+      }
+    }
     if (collidable[i]) {
       b.Add("geom")
           .Set("name", SkinNames::PinGeom(i))
@@ -181,7 +196,7 @@ SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, c
         .Set("size", std::vector<double>{0.0003});
   }
   // Skin bending couples the normal motion of neighbouring pins.
-  if (mech.k_bend_N_m > 0.0) {
+  if (coupled && mech.k_bend_N_m > 0.0) {
     for (const auto& e : lattice.neighbours) {
       mjcf::Element t("fixed");
       t.Set("name", fmt::format("bend_{}_{}", e[0], e[1])).Set("stiffness", mech.k_bend_N_m);

@@ -26,6 +26,7 @@ struct SkinConfig {
   double damping_ratio = 0.7;       ///< damping ratio of each pin's normal mode
   double shear_damping_ratio = 4.0; ///< damping ratio of the skin's in-plane (shear) mode
   double contact_radius_mm = 1.5;   ///< radius of the spherical contact patch at each pin
+  std::string coupling = "shell";   ///< how pins are coupled through the skin: shell or none
 
   template <class V>
   void Visit(V& v) {
@@ -66,6 +67,11 @@ struct SkinConfig {
     v("contact_radius_mm", contact_radius_mm, "mm",
       "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",
       Bounds::Closed(0.1, 10.0));
+    v("coupling", coupling, "",
+      "shell: the membrane couples the pins (one in-plane shell on the gel, bending springs between "
+      "neighbours). none: every pin on its own gel column with its own normal and two shear springs and no "
+      "coupling - the brush model, used to validate the contact mechanics.",
+      Choices{"shell", "none"});
   }
   /// Cross-field rules (the lattice must fit on the hemisphere).
   void ValidateRules() const;
@@ -146,6 +152,7 @@ struct SkinMechanics {
 struct SkinNames {
   static std::string PinBody(int i);
   static std::string PinJoint(int i);
+  static std::string PinShearJoint(int i, char axis);  ///< uncoupled skin: 'y' or 'z' shear DOF
   static std::string PinGeom(int i);
   static std::string PinSite(int i);       ///< inner end of the pin (what the camera sees)
   static std::string PinOuterSite(int i);  ///< outer contact point (external markers)
@@ -161,7 +168,7 @@ struct SkinPart {
   int n_collidable = 0;
 };
 
-/// Builds the smooth TacTip part. `collidable[i]` says whether pin i gets a contact
+/// Builds the smooth TacTip part (skin.coupling chooses the shell or the uncoupled lattice). `collidable[i]` says whether pin i gets a contact
 /// geom (pins that cannot touch the stimulus get none). Contact bits: pins have
 /// contype 0 / conaffinity 2, so they touch only geoms with contype 2.
 SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,

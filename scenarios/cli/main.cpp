@@ -14,6 +14,7 @@
 #include "detectors/detector.h"
 #include "scenarios/cli/detect_commands.h"
 #include "scenarios/registry.h"
+#include "scenarios/validate.h"
 #include "sensors/dataset.h"
 #include "sim/files.h"
 #include "sim/simulation.h"
@@ -134,6 +135,16 @@ int main(int argc, char** argv) {
   add_config_opts(cmd_config);
   cmd_config->add_flag("--yaml", as_yaml, "Print the resolved config as YAML instead of the table.");
 
+  // tactip validate contact
+  std::string validate_what;
+  auto* cmd_validate = app.add_subcommand(
+      "validate", "Check the simulated contact against analytic anchors and print measured vs predicted.");
+  cmd_validate->add_option("what", validate_what, "contact: the pin lattice against the brush model.")
+      ->required()
+      ->check(CLI::IsMember({"contact"}));
+  add_config_opts(cmd_validate);
+  cmd_validate->get_option("scenario")->required(false);
+
   // tactip train / evaluate / detect / bench
   const auto run_detector_command = tactip::cli::AddDetectorCommands(app, &g_stop);
 
@@ -162,6 +173,22 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (const int code = run_detector_command(); code >= 0) return code;
+    if (*cmd_validate) {
+      // The skin, contact and solver sections of the rail config apply to the rig.
+      const auto rail = tactip::LoadConfig<tactip::RailScenarioConfig>(config_path, sets);
+      tactip::BrushCheckOptions o;
+      o.rig.sim = rail.sim;
+      o.rig.skin = rail.skin;
+      o.rig.contact = rail.contact;
+      std::fprintf(stderr, "validate: pressing an uncoupled %d-ring lattice and shearing it past gross slip\n",
+                   rail.skin.rings);
+      const tactip::BrushCheck c = tactip::RunBrushCheck(o);
+      constexpr double kAgreement = 0.98, kLoadError = 0.03;
+      std::printf("%s", tactip::FormatBrushCheck(c, kAgreement, kLoadError).c_str());
+      const bool ok = c.state_agreement >= kAgreement && c.load_error_max <= kLoadError;
+      if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
+      return ok ? 0 : 1;
+    }
     const tactip::ScenarioEntry& entry = tactip::FindScenario(scenario_name);
     tactip::ConfigSource src;
     src.yaml_path = config_path;

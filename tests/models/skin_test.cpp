@@ -91,6 +91,20 @@ TEST(SkinTest, RailSceneCompilesWithOnlyReachablePinsCollidable) {
   EXPECT_NO_THROW(CompiledModel::FromXml(curved.xml));
 }
 
+TEST(SkinTest, UncoupledLatticeHasThreeSpringsPerPinAndNoCoupling) {
+  RailSceneSpec spec;
+  spec.max_depth_m = 3e-3;
+  const CompiledModel shell = CompiledModel::FromXml(BuildRailScene(spec).xml);
+  spec.skin.coupling = "none";
+  const BuiltScene scene = BuildRailScene(spec);
+  const CompiledModel brush = CompiledModel::FromXml(scene.xml);
+  // Shell: 2 shear DOFs for the whole skin; uncoupled: 2 per pin instead.
+  EXPECT_EQ(brush.nv() - shell.nv(), 2 * 127 - 2);
+  EXPECT_NO_THROW(brush.JointId(SkinNames::PinShearJoint(5, 'y')));
+  EXPECT_THROW(shell.JointId(SkinNames::PinShearJoint(5, 'y')), ModelError);
+  EXPECT_EQ(scene.xml.find("<fixed"), std::string::npos) << "no bending tendons in the uncoupled lattice";
+}
+
 TEST(SkinTest, CulledPinsReallyCannotTouch) {
   // Pins without a contact geom must lie farther from the plate than the deepest press.
   SkinConfig skin;

@@ -1,0 +1,143 @@
+#include "scenarios/validate.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "sensors/labels.h"
+#include "sim/simulation.h"
+
+namespace tactip {
+
+namespace {
+// Quintic smooth step 0 -> 1.
+double Smooth(double u) {
+  u = std::clamp(u, 0.0, 1.0);
+  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
+}
+}  // namespace
+
+BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
+  // The brush model is the uncoupled lattice with single-coefficient Coulomb friction.
+  ContactRigSpec spec = opts.rig;
+  spec.skin.coupling = "none";
+  spec.skin.shear_damping_ratio = opts.shear_damping_ratio;
+  spec.max_depth_m = opts.depth_mm * 1e-3;
+  const CompiledModel model = CompiledModel::FromXml(BuildContactRig(spec));
+  Simulation sim(model);
+  const PinLattice lattice = PinLattice::Build(spec.skin);
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
+  const int N = static_cast<int>(lattice.size());
+  std::vector<int> slot(model.ngeom(), -1);
+  for (int i = 0; i < N; ++i) {
+    try {
+      slot[model.GeomId(SkinNames::PinGeom(i))] = i;
+    } catch (const ModelError&) {
+      // culled pin: cannot reach the plate
+    }
+  }
+  const int servo_x = model.ActuatorId(ContactRigNames::kServoNormal);
+  const int servo_y = model.ActuatorId(ContactRigNames::kServoShear);
+  const int qy = model.JointQposAdr(model.JointId(ContactRigNames::kShear));
+  const double mu = spec.contact.friction, dt = model.timestep();
+
+  // Press: the plate moves -x by gap + depth over 1 s, then settles.
+  const double press = spec.gap_m + opts.depth_mm * 1e-3;
+  std::vector<GeomContact> contacts(N);
+  double t = 0.0;
+  auto step = [&](double x_target, double y_target) {
+    sim.SetControl(servo_x, -x_target);
+    sim.SetControl(servo_y, y_target);
+    sim.Step();
+    t += dt;
+  };
+  while (t < 1.3) step(press * Smooth(t / 1.0), 0.0);
+
+  // Normal loads after the press fix the brush prediction's slip displacements.
+  sim.ReadContacts(slot, contacts);
+  BrushCheck out;
+  out.k_t_N_m = mech.k_shear_N_m;
+  double sum_n = 0.0, n_max = 0.0;
+  for (const auto& c : contacts) {
+    if (!c.in_contact) continue;
+    ++out.pins_in_contact;
+    sum_n += c.normal_N;
+    n_max = std::max(n_max, c.normal_N);
+  }
+  out.mu_P_N = mu * sum_n;
+  if (out.pins_in_contact == 0) throw SimulationError("brush check: no pin touches the plate after the press");
+
+  // Shear ramp at constant speed past the last pin's slip displacement, sampled.
+  const double u_max = opts.overshoot * mu * n_max / mech.k_shear_N_m;
+  const double v = opts.shear_speed_mm_s * 1e-3;
+  const double y0 = sim.Qpos(qy);
+  const double t0 = t;
+  LabelConfig labels;
+  std::vector<PinContactSample> samples(N);
+  std::vector<std::uint8_t> pin_contact(N), pin_slip(N);
+  long agree = 0;
+  double next_sample = t0 + opts.sample_every_s;
+  while (t - t0 < u_max / v) {
+    step(press, v * (t - t0));
+    if (t < next_sample) continue;
+    next_sample += opts.sample_every_s;
+    sim.ReadContacts(slot, contacts);
+    BrushSample s;
+    s.u_m = sim.Qpos(qy) - y0;
+    for (int i = 0; i < N; ++i) {
+      const GeomContact& c = contacts[i];
+      const double fn = c.force_world[0] * c.normal_world[0] + c.force_world[1] * c.normal_world[1] +
+                        c.force_world[2] * c.normal_world[2];
+      const double fty = c.force_world[1] - fn * c.normal_world[1];
+      const double ftz = c.force_world[2] - fn * c.normal_world[2];
+      samples[i] = {c.in_contact, c.slip_speed_m_s,
+                    c.in_contact ? std::hypot(fty, ftz) / (mu * c.normal_N) : 0.0};
+      if (!c.in_contact) continue;
+      s.q_N += std::abs(fty);
+      const double spring = mech.k_shear_N_m * s.u_m;
+      s.q_brush_N += std::min(spring, mu * c.normal_N);
+      s.slipping_brush += spring > mu * c.normal_N ? 1 : 0;
+    }
+    const FrameLabels fl = LabelFrame(samples, labels, pin_contact.data(), pin_slip.data());
+    s.contacting = fl.n_contact;
+    s.slipping = fl.n_slip;
+    // Per-pin agreement with the brush state.
+    for (int i = 0; i < N; ++i) {
+      if (!pin_contact[i]) continue;
+      const bool brush_slip = mech.k_shear_N_m * s.u_m > mu * contacts[i].normal_N;
+      agree += (brush_slip == static_cast<bool>(pin_slip[i])) ? 1 : 0;
+      ++out.pin_samples;
+    }
+    if (s.q_brush_N > opts.min_load_fraction * out.mu_P_N) {
+      out.load_error_max = std::max(out.load_error_max, std::abs(s.q_N - s.q_brush_N) / s.q_brush_N);
+    }
+    out.samples.push_back(s);
+  }
+  out.state_agreement = out.pin_samples > 0 ? static_cast<double>(agree) / static_cast<double>(out.pin_samples) : 0.0;
+  return out;
+}
+
+std::string FormatBrushCheck(const BrushCheck& c, double agreement_required, double load_error_allowed) {
+  std::string out = fmt::format(
+      "brush model (uncoupled lattice, {} pins in contact, k_t = {:.3g} N/m, mu P = {:.4f} N)\n", c.pins_in_contact,
+      c.k_t_N_m, c.mu_P_N);
+  out += fmt::format("  {:>8} {:>10} {:>10} {:>8} {:>10} {:>10}\n", "u_mm", "Q_sim_N", "Q_brush_N", "err_%",
+                     "slip_sim", "slip_brush");
+  const size_t stride = std::max<size_t>(1, c.samples.size() / 12);
+  for (size_t k = 0; k < c.samples.size(); k += stride) {
+    const BrushSample& s = c.samples[k];
+    out += fmt::format("  {:>8.3f} {:>10.5f} {:>10.5f} {:>8.2f} {:>10} {:>10}\n", s.u_m * 1e3, s.q_N, s.q_brush_N,
+                       s.q_brush_N > 0 ? 100.0 * (s.q_N - s.q_brush_N) / s.q_brush_N : 0.0, s.slipping,
+                       s.slipping_brush);
+  }
+  const bool ok_state = c.state_agreement >= agreement_required;
+  const bool ok_load = c.load_error_max <= load_error_allowed;
+  out += fmt::format("  stick/slip state agrees for {:.2f} % of {} contacting pin-samples (required >= {:.0f} %): {}\n",
+                     100.0 * c.state_agreement, c.pin_samples, 100.0 * agreement_required, ok_state ? "PASS" : "FAIL");
+  out += fmt::format("  transmitted load within {:.2f} % of sum min(k_t u, mu N_i) (allowed {:.0f} %): {}\n",
+                     100.0 * c.load_error_max, 100.0 * load_error_allowed, ok_load ? "PASS" : "FAIL");
+  return out;
+}
+
+}  // namespace tactip

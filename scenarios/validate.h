@@ -1,0 +1,53 @@
+#pragma once
+// Checks of the simulated contact against analytic anchors (physics.md), run by
+// `tactip validate contact` and by the tests.
+
+#include <string>
+#include <vector>
+
+#include "models/contact_rig.h"
+
+namespace tactip {
+
+/// Settings of the brush-model check.
+struct BrushCheckOptions {
+  ContactRigSpec rig;              ///< skin (forced to coupling = none), contact, solver
+  double depth_mm = 2.0;           ///< plate indentation at the apex
+  double shear_speed_mm_s = 0.5;   ///< plate tangential speed during the shear ramp (quasi-static)
+  double shear_damping_ratio = 0.7;  ///< pin shear damping for the check (viscous forces stay < 0.1 % of mu P)
+  double overshoot = 1.3;          ///< shear to this multiple of the last pin's slip displacement
+  double sample_every_s = 0.01;    ///< sampling interval of the shear ramp
+  double min_load_fraction = 0.1;  ///< load error is judged where Q_brush > this * mu P (below, the
+                                   ///< shear-rate damping force is not negligible)
+};
+
+/// One sample of the shear ramp.
+struct BrushSample {
+  double u_m = 0.0;           ///< plate displacement since the ramp started
+  double q_N = 0.0;           ///< simulated tangential load on the skin
+  double q_brush_N = 0.0;     ///< sum_i min(k_t u, mu N_i) from the simulated N_i
+  int slipping = 0;           ///< pins the simulation labels slipping
+  int slipping_brush = 0;     ///< pins the brush model says slip (k_t u > mu N_i)
+  int contacting = 0;         ///< pins in contact
+};
+
+/// Result of the brush-model check.
+struct BrushCheck {
+  std::vector<BrushSample> samples;
+  double state_agreement = 0.0;  ///< fraction of contacting pin-samples whose state matches
+  long pin_samples = 0;          ///< contacting pin-samples compared
+  double load_error_max = 0.0;   ///< max |Q - Q_brush| / Q_brush where Q_brush is not tiny
+  double mu_P_N = 0.0;           ///< mu times the total normal load (the gross-slip load)
+  double k_t_N_m = 0.0;          ///< per-pin shear stiffness
+  int pins_in_contact = 0;       ///< pins touching the plate after the press
+};
+
+/// Presses an uncoupled pin lattice onto a flat plate, shears the plate slowly past
+/// gross slip, and compares every pin's stick/slip state and the transmitted load with
+/// the brush model: pin i sticks while k_t u <= mu N_i, Q = sum_i min(k_t u, mu N_i).
+BrushCheck RunBrushCheck(const BrushCheckOptions& opts);
+
+/// Text report of a brush check (for the command line).
+std::string FormatBrushCheck(const BrushCheck& c, double agreement_required, double load_error_allowed);
+
+}  // namespace tactip
