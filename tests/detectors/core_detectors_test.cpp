@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +23,9 @@
 
 namespace tactip {
 namespace {
+
+using testing::TempPath;
+using testing::WriteFile;
 
 constexpr float kPitchPx = 10.0f;   // lattice pitch of the synthetic sensor
 constexpr double kExact = 1e-6;     // float arithmetic on pixel-sized values, integer shifts
@@ -91,14 +96,7 @@ std::vector<PinFrame> StillThenSlide(int n_still, int n_slide, float slip_px, do
   return frames;
 }
 
-/// Path of a scratch file unique to the running test.
-std::string TempPath(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "tactip_" + info->test_suite_name() + "_" + info->name() + "_" + name;
-}
 
-/// Writes `text` to `path` verbatim.
-void WriteFile(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 /// The message of the DetectorInputError thrown by `f`, or "" if none is thrown.
 template <typename F>

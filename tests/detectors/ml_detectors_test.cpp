@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -23,6 +25,9 @@
 
 namespace tactip {
 namespace {
+
+using testing::TempPath;
+using testing::WriteFile;
 
 constexpr int kPins = 19;
 constexpr int kFrames = 100;
@@ -120,16 +125,7 @@ std::vector<Decision> Stream(Detector& det, const LabeledRun& run) {
   return out;
 }
 
-/// A path in the test temporary directory.
-std::string TempPath(const std::string& name) {
-  return (std::filesystem::path(::testing::TempDir()) / ("ml_detectors_test_" + name)).string();
-}
 
-/// Writes `text` to `path` verbatim.
-void WriteFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
 
 /// Expects `fn` to throw DetectorInputError whose message contains every fragment.
 template <typename Fn>

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch.h"
+
 #include <fstream>
 #include <random>
 #include <string>
@@ -15,11 +17,9 @@
 namespace tactip {
 namespace {
 
-/// Path of a scratch file unique to the running test.
-std::string TempPath(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "tactip_" + info->test_suite_name() + "_" + info->name() + "_" + name;
-}
+using testing::TempPath;
+using testing::WriteFile;
+
 
 /// Writes `text` to a scratch file and returns its path.
 std::string WriteCsv(const std::string& name, const std::string& text) {
