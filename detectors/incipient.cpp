@@ -18,14 +18,14 @@ constexpr const char* kHeader = "tactip-detector incipient 1";
 }  // namespace
 
 IncipientDetector::IncipientDetector(const IncipientParams& params) : params_(params) {
-  if (params.window < 1) {
-    throw DetectorInputError("window = " + std::to_string(params.window) + ": must be >= 1");
+  if (params.window < 1 || params.window > 1000) {
+    throw DetectorInputError("window = " + std::to_string(params.window) + ": must be in [1, 1000]");
   }
   if (!(params.speed_thr_px > 0.0) || !std::isfinite(params.speed_thr_px)) {
     throw DetectorInputError("speed_thr_px = " + RoundTripText(params.speed_thr_px) + ": must be finite and > 0");
   }
-  if (params.count_thr < 1) {
-    throw DetectorInputError("count_thr = " + std::to_string(params.count_thr) + ": must be >= 1");
+  if (params.count_thr < 1 || params.count_thr > 1000000) {
+    throw DetectorInputError("count_thr = " + std::to_string(params.count_thr) + ": must be in [1, 1000000]");
   }
 }
 

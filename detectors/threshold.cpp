@@ -118,6 +118,9 @@ std::unique_ptr<ThresholdDetector> ThresholdDetector::Train(const std::vector<La
     }
   }
   if (n_pos == 0) throw DetectorInputError("threshold training: the selected frames hold no slip frame");
+  for (const auto& [v, label] : samples) {
+    if (!std::isfinite(v)) throw DetectorInputError("threshold training: a frame has a non-finite pin velocity");
+  }
 
   // Sweep T upward over the sorted distinct values. Candidate j puts T at the lowest
   // distinct value (everything slip) or midway between distinct values j-1 and j.

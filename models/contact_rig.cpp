@@ -30,7 +30,8 @@ std::string BuildContactRig(const ContactRigSpec& spec) {
       .Set("noslip_tolerance", spec.sim.noslip_tolerance)
       .Set("gravity", std::vector<double>{0, 0, 0});
   const int nconmax = skin.n_collidable + 8;
-  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", 3 * nconmax + 16);
+  const int rows_per_contact = spec.sim.cone == "pyramidal" ? 4 : 3;  // condim 3
+  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16);
 
   mjcf::Element& world = root.Add("worldbody");
   // Sensor fixed in the world, dome centre at x = -R so the apex is at x = 0.

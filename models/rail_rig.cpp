@@ -95,7 +95,8 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   // Contact budget: one contact per collidable pin plus spare; rows for elliptic
   // contacts (3 each), the rail stop and the rail friction.
   const int nconmax = skin.n_collidable + 8;
-  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", 3 * nconmax + 16);
+  const int rows_per_contact = spec.sim.cone == "pyramidal" ? 4 : 3;  // condim 3
+  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16);
 
   mjcf::Element& world = root.Add("worldbody");
   world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));

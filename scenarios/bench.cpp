@@ -44,7 +44,10 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   auto log = [&](const std::string& s) {
     if (opts.log) opts.log(s);
   };
-  if (opts.runs < 2) throw InputError(fmt::format("--runs = {}: the benchmark needs at least 2", opts.runs));
+  if (opts.runs < 4) {
+    throw InputError(fmt::format("--runs = {}: the benchmark needs at least 4 (cross-validation needs 2 training runs)",
+                                 opts.runs));
+  }
   std::error_code ec;
   std::filesystem::create_directories(opts.out_dir, ec);
   if (ec) throw InputError(fmt::format("cannot create output folder '{}': {}", opts.out_dir, ec.message()));
@@ -54,8 +57,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   // The standard dataset: generated with a fixed seed unless one is given.
   if (opts.dataset.empty()) {
     r.dataset_path = (std::filesystem::path(opts.out_dir) / "bench-rail.h5").string();
-    RailScenarioConfig c = cfg;
-    c.rail.retract_speed_mm_s = opts.speed_mm_s;
+    const RailScenarioConfig& c = cfg;
     GenerateOptions g;
     g.runs = opts.runs;
     g.seed = opts.seed;
@@ -65,10 +67,10 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
     g.progress = [&](int done, int total, int, const RailRunSummary&) {
       if (done % 10 == 0 || done == total) log(fmt::format("dataset: {}/{} runs", done, total));
     };
-    log(fmt::format("generating {} rail runs at {} mm/s (seed {}) into {}", opts.runs, opts.speed_mm_s, opts.seed,
-                    r.dataset_path));
+    log(fmt::format("generating {} rail runs at {} mm/s (seed {}) into {}", opts.runs, c.rail.retract_speed_mm_s,
+                    opts.seed, r.dataset_path));
     GenerateRailDataset(c, g);
-    r.speed_mm_s = opts.speed_mm_s;
+    r.speed_mm_s = c.rail.retract_speed_mm_s;
   } else {
     r.dataset_path = opts.dataset;
     r.speed_mm_s = std::nan("");
@@ -93,6 +95,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   // Train, save and evaluate every detector on the held-out runs. Feature variants
   // other than the configured one are labelled "name/features".
   auto finish = [&](Detector& det, const std::string& label, bool trained) {
+    if (opts.stop && opts.stop->load()) throw Interrupted();
     BenchRow row;
     if (trained) {
       std::string file = label;
@@ -106,8 +109,17 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
     log(fmt::format("{}: F1 {:.3f}", label, row.eval.confusion.F1()));
     r.rows.push_back(std::move(row));
   };
+  if (r.train_slip_rows == 0) {
+    throw InputError(fmt::format("dataset '{}': no training run has a gross-slip onset after the retraction starts "
+                                 "(objects slipping during the lift are not scored)", r.dataset_path));
+  }
+  auto check_stop = [&] {
+    if (opts.stop && opts.stop->load()) throw Interrupted();
+  };
+  check_stop();
   log("training threshold");
   finish(*ThresholdDetector::Train(train, topt), "threshold", true);
+  check_stop();
   log("training logreg (grouped CV over C)");
   finish(*LogRegDetector::Train(ts, topt), "logreg", true);
   // SVMs on the configured features, then on the two single-feature variants.
@@ -121,6 +133,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
       TrainOptions vopt = topt;
       vopt.features = f;
       const std::string label = f == topt.features ? base : base + "/" + ToString(f);
+      check_stop();
       log(fmt::format("training {} (grouped CV over C{})", label,
                       kernel == SvmDetector::Kernel::kRbf ? " and gamma" : ""));
       const TrainingSet vts = f == topt.features ? TrainingSet{} : BuildTrainingSet(train, vopt);

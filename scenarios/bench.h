@@ -19,7 +19,6 @@ struct BenchOptions {
   std::string out_dir = "bench-results";  ///< where bench.json, bench.csv and models go
   std::string dataset;      ///< existing dataset to use; empty = generate the standard one
   int runs = 40;            ///< runs of the standard dataset (first half train, second half test)
-  double speed_mm_s = 0.1;  ///< retraction speed of the standard dataset
   std::uint64_t seed = 2026;  ///< dataset and training seed
   int jobs = 0;             ///< generation threads (0 = all cores)
   TrainOptions train;       ///< training-set construction and CV grids

@@ -76,6 +76,14 @@ void RailScenarioConfig::ValidateRules() const {
              fmt::format("must be >= 2 * sim.timestep_s = {} s (MuJoCo would silently soften it)",
                          2.0 * sim.timestep_s));
   }
+  // A run must end: the retraction (past the press plus 5 mm) within an hour of simulation.
+  constexpr double kMaxRetractS = 3600.0;
+  const double retract_mm = rail.approach_gap_mm + rail.press_depth_mm + rail.press_depth_jitter_mm + 5.0;
+  if (retract_mm / rail.retract_speed_mm_s > kMaxRetractS) {
+    FailRule("rail.retract_speed_mm_s", rail.retract_speed_mm_s,
+             fmt::format("the retraction would take {:.0f} s of simulated time (limit {:.0f} s); use >= {:.3g}",
+                         retract_mm / rail.retract_speed_mm_s, kMaxRetractS, retract_mm / kMaxRetractS));
+  }
   const double frame_dt = 1.0 / sensor.frame_rate_hz;
   if (frame_dt < sim.timestep_s) {
     FailRule("sensor.frame_rate_hz", sensor.frame_rate_hz,
@@ -310,8 +318,9 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
     const double obj_z = sim.BodyPos(im.slider_body)[2];
     rec.object_height_m.push_back(obj_z - RailLayout::kAxisHeight);
 
-    // Run-level events from frames: object drop and creep.
-    if (t >= sched.retract_start) {
+    // Run-level events from frames: object drop and creep, from the retraction on (or
+    // from the onset, if the object already slips during the lift).
+    if (t >= sched.retract_start || !std::isnan(sum.gross_slip_onset_s)) {
       // Object drop relative to the sensor, and sliding relative to the centre pin.
       const double rel = obj_z - origin[2];
       const double creep = obj_z - sim.SitePos(im.pin_outer_site[0])[2];
@@ -329,6 +338,7 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
 
   // Run attributes.
   sum.creep_um = creep_max * 1e6;
+  sum.held = std::isnan(sum.gross_slip_onset_s) || sum.gross_slip_onset_s >= sched.retract_start;
   sum.mujoco_warnings = sim.WarningCount();
   sum.sim_time_s = static_cast<double>(sum.steps) * dt;
   sum.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -344,6 +354,7 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   rec.attrs["coulomb_early_s"] = sum.coulomb_early_s;
   rec.attrs["creep_um"] = sum.creep_um;
   rec.attrs["rail_friction_N"] = c.rail.friction_N;
+  rec.attrs["object_held"] = sum.held ? 1.0 : 0.0;
   rec.text_attrs["stimulus"] = c.rail.stimulus;
   rec.CheckShapes();
   return sum;

@@ -57,6 +57,7 @@ struct RailRunSummary {
   double wall_time_s = 0.0;          ///< wall-clock time of the run
   long long steps = 0;               ///< physics steps
   int mujoco_warnings = 0;           ///< warnings MuJoCo raised (a run with any stops early)
+  bool held = true;                  ///< false: the object slipped before the retraction started
 };
 
 /// Set to true (e.g. by a signal handler) to stop running runs with an InputError-free

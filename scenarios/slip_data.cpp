@@ -30,6 +30,7 @@ std::vector<int> ParseRunList(const std::string& text) {
     } else {
       const int a = number(item.substr(0, dash)), b = number(item.substr(dash + 1));
       if (b < a) throw bad();
+      if (b - a > 1000000) throw InputError("--runs '" + text + "': range larger than a million runs");
       for (int i = a; i <= b; ++i) out.insert(i);
     }
     start = comma + 1;
@@ -60,8 +61,13 @@ std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vect
       pf.pos_px.resize(static_cast<Eigen::Index>(N), 2);
       pf.valid.assign(rec.valid.begin() + f * N, rec.valid.begin() + (f + 1) * N);
       for (size_t i = 0; i < N; ++i) {
-        pf.pos_px(static_cast<Eigen::Index>(i), 0) = rec.pos_px[(f * N + i) * 2];
-        pf.pos_px(static_cast<Eigen::Index>(i), 1) = rec.pos_px[(f * N + i) * 2 + 1];
+        const float u = rec.pos_px[(f * N + i) * 2], v = rec.pos_px[(f * N + i) * 2 + 1];
+        if (!std::isfinite(u) || !std::isfinite(v)) {
+          throw InputError(fmt::format("dataset '{}' run {} frame {} pin {}: position is not a finite number", path,
+                                       idx, f, i));
+        }
+        pf.pos_px(static_cast<Eigen::Index>(i), 0) = u;
+        pf.pos_px(static_cast<Eigen::Index>(i), 1) = v;
       }
     }
     // Ground truth: labelled window from the retraction, onset from the exact onset time.

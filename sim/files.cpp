@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "sim/config.h"
@@ -15,6 +16,19 @@ namespace tactip {
 std::string TempPathFor(const std::string& path) {
   static std::atomic<int> counter{0};  // distinguishes temp files of one process
   return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+}
+
+void CheckWritableLocation(const std::string& path) {
+  const std::filesystem::path p(path);
+  const std::filesystem::path dir = p.parent_path().empty() ? std::filesystem::path(".") : p.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) {
+    throw InputError("cannot write '" + path + "': folder '" + dir.string() + "' does not exist");
+  }
+  if (::access(dir.c_str(), W_OK) != 0) {
+    throw InputError("cannot write '" + path + "': folder '" + dir.string() + "' is not writable");
+  }
+  if (std::filesystem::is_directory(p, ec)) throw InputError("cannot write '" + path + "': it is a folder");
 }
 
 void WriteFileAtomic(const std::string& path, const std::string& text) {

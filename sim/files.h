@@ -9,6 +9,10 @@ namespace tactip {
 /// InputError naming the path if it cannot be written. A failure leaves no file.
 void WriteFileAtomic(const std::string& path, const std::string& text);
 
+/// Throws InputError naming `path` if its folder does not exist or is not writable, so
+/// long jobs fail before they start rather than at the end.
+void CheckWritableLocation(const std::string& path);
+
 /// A unique temporary name beside `path` ("path.tmp.<pid>.<n>").
 std::string TempPathFor(const std::string& path);
 

@@ -24,7 +24,7 @@ struct SimConfig {
     v("timestep_s", timestep_s, "s",
       "Physics step. 2 ms is stable for the default skin (stiffest pin mode omega*dt = 1.93 against a limit "
       "of 2.74) and keeps the slip-onset error within one camera frame of the 0.5 ms reference.",
-      Bounds::LeftOpen(0.0, 0.01));
+      Bounds::Closed(1e-5, 0.01));
     v("iterations", iterations, "",
       "Maximum Newton iterations per step (the solver usually exits after 2-5).", Bounds::Closed(1, 1000));
     v("tolerance", tolerance, "", "Newton early-exit tolerance on the cost improvement.",

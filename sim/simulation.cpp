@@ -117,19 +117,22 @@ double Simulation::time() const { return data_->time; }
 void Simulation::SetControl(int actuator, double value) { data_->ctrl[actuator] = value; }
 
 void Simulation::Forward() {
+  const double t = data_->time;
   mj_forward(model_.raw(), data_.get());
-  CheckWarnings();
+  CheckWarnings(t);
 }
 
 void Simulation::Step() {
   // Split step: positions/velocities, then forces and integration (Euler), so that
   // contact Jacobians from step1 match the configuration the forces act in.
+  // MuJoCo resets the state (and its time) on a bad step, so remember when it started.
+  const double t = data_->time;
   mj_step1(model_.raw(), data_.get());
   mj_step2(model_.raw(), data_.get());
-  CheckWarnings();
+  CheckWarnings(t);
 }
 
-void Simulation::CheckWarnings() {
+void Simulation::CheckWarnings(double step_start_time) {
   const mjData* d = data_.get();
   for (int i = 0; i < mjNWARNING; ++i) {
     if (d->warning[i].number == warn_seen_[i]) continue;
@@ -142,7 +145,7 @@ void Simulation::CheckWarnings() {
       hint = fmt::format("; reduce sim.timestep_s (now {} s) or the stiffest spring", model_.timestep());
     }
     throw SimulationError(
-        fmt::format("simulation stopped at t = {:.4f} s: MuJoCo warning {}{}", d->time, WarningName(i), hint));
+        fmt::format("simulation stopped at t = {:.4f} s: MuJoCo warning {}{}", step_start_time, WarningName(i), hint));
   }
 }
 

@@ -119,7 +119,7 @@ class Simulation {
   int WarningCount() const;
 
  private:
-  void CheckWarnings();
+  void CheckWarnings(double step_start_time);
   const CompiledModel& model_;
   std::unique_ptr<mjData_, MjDataDeleter> data_;
   std::vector<double> jac_a_, jac_b_;  // 3 x nv scratch for contact-point Jacobians

@@ -32,7 +32,7 @@ std::vector<double> ParseGrid(const std::string& opt, const std::string& text) {
     try {
       size_t used = 0;
       const double v = std::stod(item, &used);
-      if (used != item.size() || !(v > 0.0)) throw std::invalid_argument("bad");
+      if (used != item.size() || !(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument("bad");
       out.push_back(v);
     } catch (const std::exception&) {
       throw InputError(fmt::format("{} '{}': expected positive numbers separated by commas", opt, text));
@@ -122,7 +122,7 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     std::string bench_out = "bench-results", bench_dataset, config;
     std::vector<std::string> sets;
     int bench_runs = 40, jobs = 0;
-    double speed = 0.1;
+    double speed = std::nan("");
     unsigned long long bench_seed = 2026;
   };
   auto s = std::make_shared<State>();
@@ -177,8 +177,9 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
   bench->add_option("--out", s->bench_out, "Output folder for bench.json, bench.csv and models (default bench-results).");
   bench->add_option("--dataset", s->bench_dataset, "Use this dataset instead of generating the standard one.");
   bench->add_option("--runs", s->bench_runs, "Runs of the standard dataset (default 40; half train, half test).")
-      ->check(CLI::Range(2, 10000));
-  bench->add_option("--speed-mm-s", s->speed, "Retraction speed of the standard dataset (default 0.1).");
+      ->check(CLI::Range(4, 10000));
+  bench->add_option("--speed-mm-s", s->speed,
+                    "Shortcut for --set rail.retract_speed_mm_s=V for the generated dataset (default 0.1).");
   bench->add_option("--seed", s->bench_seed, "Dataset and training seed (default 2026).");
   bench->add_option("--jobs", s->jobs, "Generation threads (default: all cores).");
   bench->add_option("--config", s->config, "YAML rail config for the generated dataset.")->check(CLI::ExistingFile);
@@ -189,6 +190,7 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     const std::vector<int> runs = s->runs.empty() ? std::vector<int>{} : ParseRunList(s->runs);
     if (*train) {
       const TrainOptions opts = s->train.Options();
+      CheckWritableLocation(s->out);
       const std::vector<LabeledRun> data = LoadDatasetRuns(s->data, runs, s->train.score_onset_frame);
       std::unique_ptr<Detector> det;
       std::string kind = s->kind == "svm" ? "svm-" + s->kernel : s->kind;
@@ -221,6 +223,7 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
       return 0;
     }
     if (*detect) {
+      CheckWritableLocation(s->out);
       std::unique_ptr<Detector> det;
       if (s->kind == "incipient") {
         if (!s->model.empty()) throw InputError("detect incipient takes --window/--speed-thr-px/--count-thr, not --model");
@@ -248,14 +251,16 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
       o.out_dir = s->bench_out;
       o.dataset = s->bench_dataset;
       o.runs = s->bench_runs;
-      o.speed_mm_s = s->speed;
       o.seed = s->bench_seed;
       o.jobs = s->jobs;
       o.train = s->train.Options();
       o.score_onset_frame = s->train.score_onset_frame;
       o.stop = stop;
       o.log = [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); };
-      const RailScenarioConfig cfg = LoadConfig<RailScenarioConfig>(s->config, s->sets);
+      std::vector<std::string> sets;
+      if (!std::isnan(s->speed)) sets.push_back(fmt::format("rail.retract_speed_mm_s={}", s->speed));
+      sets.insert(sets.end(), s->sets.begin(), s->sets.end());
+      const RailScenarioConfig cfg = LoadConfig<RailScenarioConfig>(s->config, sets);
       const BenchResult r = RunBench(cfg, o);
       std::printf("%s", FormatBenchTable(r).c_str());
       std::printf("wrote %s/bench.json and %s/bench.csv\n", o.out_dir.c_str(), o.out_dir.c_str());

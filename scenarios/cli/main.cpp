@@ -161,8 +161,12 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
+  // Long simulations stop cleanly on Ctrl-C; other commands keep the default handling
+  // (their outputs are written atomically at the end).
+  if (*cmd_gen || app.got_subcommand("bench")) {
+    std::signal(SIGINT, OnSignal);
+    std::signal(SIGTERM, OnSignal);
+  }
   try {
     if (*cmd_list) {
       for (const auto& s : tactip::Scenarios()) std::printf("%-12s %s\n", s.name.c_str(), s.description.c_str());
@@ -209,6 +213,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*cmd_export) {
+      if (!out_path.empty()) tactip::CheckWritableLocation(out_path);
       const std::string xml = entry.export_mjcf(src);
       if (out_path.empty()) {
         std::printf("%s", xml.c_str());
@@ -221,6 +226,7 @@ int main(int argc, char** argv) {
     if (*cmd_gen) {
       entry.describe(src);  // validates the config before anything is printed or written
       tactip::GenerateOptions opts;
+      tactip::CheckWritableLocation(out_path.empty() ? entry.name + ".h5" : out_path);
       opts.runs = runs;
       opts.seed = seed;
       opts.jobs = jobs;
@@ -229,9 +235,10 @@ int main(int argc, char** argv) {
       opts.stop = &g_stop;
       if (!quiet) {
         opts.progress = [](int done, int total, int idx, const tactip::RailRunSummary& s) {
-          std::fprintf(stderr, "[%d/%d] run %d: onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s\n",
+          std::fprintf(stderr, "[%d/%d] run %d: onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s%s\n",
                        done, total, idx, Fmt(s.gross_slip_onset_s).c_str(), Fmt(s.object_fall_s).c_str(),
-                       Fmt(s.predicted_onset_s).c_str(), s.sim_time_s, s.wall_time_s);
+                       Fmt(s.predicted_onset_s).c_str(), s.sim_time_s, s.wall_time_s,
+                       s.held ? "" : " (not held: slipped during the lift; press deeper or lighten the object)");
         };
         std::fprintf(stderr, "generating %d %s run(s) into %s\n", runs, entry.name.c_str(), opts.out_path.c_str());
       }

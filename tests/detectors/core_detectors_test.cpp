@@ -528,13 +528,13 @@ TEST(IncipientTest, ScoreIsTheBulkSpeedOfTheStaticPins) {
 TEST(IncipientTest, InvalidParametersAreRejected) {
   IncipientParams p;
   p.window = 0;
-  EXPECT_NE(ErrorOf([&] { IncipientDetector d(p); }).find("window = 0: must be >= 1"), std::string::npos);
+  EXPECT_NE(ErrorOf([&] { IncipientDetector d(p); }).find("window = 0: must be in [1, 1000]"), std::string::npos);
   p = {};
   p.speed_thr_px = 0.0;
   EXPECT_NE(ErrorOf([&] { IncipientDetector d(p); }).find("speed_thr_px = 0"), std::string::npos);
   p = {};
   p.count_thr = 0;
-  EXPECT_NE(ErrorOf([&] { IncipientDetector d(p); }).find("count_thr = 0: must be >= 1"), std::string::npos);
+  EXPECT_NE(ErrorOf([&] { IncipientDetector d(p); }).find("count_thr = 0: must be in [1, 1000000]"), std::string::npos);
 }
 
 TEST(IncipientTest, PinCountChangeThrows) {
@@ -569,7 +569,7 @@ TEST(IncipientTest, CorruptModelThrowsNamingThePath) {
       {"tactip-detector threshold 1\n", "expected 'tactip-detector incipient 1'"},
       {head + "window 5\nspeed_thr_px 0.2\n", "missing count_thr"},
       {head + "window 5.5\nspeed_thr_px 0.2\ncount_thr 4\n", "window '5.5' is not a number"},
-      {head + "window 0\nspeed_thr_px 0.2\ncount_thr 4\n", "window = 0: must be >= 1"},
+      {head + "window 0\nspeed_thr_px 0.2\ncount_thr 4\n", "window = 0: must be in [1, 1000]"},
       {head + "window 5\nwindow 5\n", "duplicate window"},
       {head + "colour red\n", "unknown key 'colour'"},
   };

@@ -97,11 +97,14 @@ TEST_F(CliTest, BadInputGetsOneLineAndExitCode2) {
       {"generate nosuch", "unknown scenario 'nosuch' (known: rail)"},
       {"generate rail --runs 0", "--runs"},
       {"generate rail --bogus", "bogus"},
+      {"generate rail --speed-mm-s 1e-9", "the retraction would take"},
+      {"export-mjcf rail --out /nonexistent/rail.xml", "folder '/nonexistent' does not exist"},
+      {"bench --runs 3", "--runs"},
       {"info " + P("missing.h5"), "missing.h5"},
       {"info " + P("text.h5"), "not an HDF5 file"},
   };
   for (const auto& c : cases) {
-    const bool gen = c.args.rfind("generate", 0) == 0;
+    const bool gen = c.args.rfind("generate", 0) == 0 || c.args.rfind("bench", 0) == 0;
     const CliResult r = Run(c.args + (gen ? " --out " + P("x.h5") : std::string()));
     EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
     EXPECT_EQ(Lines(r.err), 1) << c.args << "\n" << r.err;
