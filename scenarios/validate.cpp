@@ -77,6 +77,7 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
   std::vector<PinContactSample> samples(N);
   std::vector<std::uint8_t> pin_contact(N), pin_slip(N);
   long agree = 0;
+  std::vector<double> first_slip_u(N, std::nan(""));
   double next_sample = t0 + opts.sample_every_s;
   while (t - t0 < u_max / v) {
     step(press, v * (t - t0));
@@ -106,6 +107,7 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
     for (int i = 0; i < N; ++i) {
       if (!pin_contact[i]) continue;
       const bool brush_slip = mech.k_shear_N_m * s.u_m > mu * contacts[i].normal_N;
+      if (pin_slip[i] && std::isnan(first_slip_u[i])) first_slip_u[i] = s.u_m;
       agree += (brush_slip == static_cast<bool>(pin_slip[i])) ? 1 : 0;
       ++out.pin_samples;
     }
@@ -115,7 +117,47 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
     out.samples.push_back(s);
   }
   out.state_agreement = out.pin_samples > 0 ? static_cast<double>(agree) / static_cast<double>(out.pin_samples) : 0.0;
+  // Slip order against normal force, over the pins that slipped.
+  std::vector<double> loads, order;
+  for (int i = 0; i < N; ++i) {
+    if (std::isnan(first_slip_u[i]) || !contacts[i].in_contact) continue;
+    loads.push_back(contacts[i].normal_N);
+    order.push_back(first_slip_u[i]);
+  }
+  out.slip_order_correlation = SpearmanCorrelation(loads, order);
   return out;
+}
+
+double SpearmanCorrelation(const std::vector<double>& a, const std::vector<double>& b) {
+  // Ranks with ties averaged, then the Pearson correlation of the ranks.
+  auto ranks = [](const std::vector<double>& x) {
+    std::vector<size_t> idx(x.size());
+    for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+    std::sort(idx.begin(), idx.end(), [&](size_t p, size_t q) { return x[p] < x[q]; });
+    std::vector<double> r(x.size());
+    for (size_t i = 0; i < idx.size();) {
+      size_t j = i;
+      while (j + 1 < idx.size() && x[idx[j + 1]] == x[idx[i]]) ++j;
+      for (size_t k = i; k <= j; ++k) r[idx[k]] = 0.5 * static_cast<double>(i + j);
+      i = j + 1;
+    }
+    return r;
+  };
+  if (a.size() != b.size() || a.size() < 2) return std::nan("");
+  const std::vector<double> ra = ranks(a), rb = ranks(b);
+  const double n = static_cast<double>(a.size());
+  double ma = 0, mb = 0;
+  for (size_t i = 0; i < ra.size(); ++i) {
+    ma += ra[i] / n;
+    mb += rb[i] / n;
+  }
+  double sab = 0, saa = 0, sbb = 0;
+  for (size_t i = 0; i < ra.size(); ++i) {
+    sab += (ra[i] - ma) * (rb[i] - mb);
+    saa += (ra[i] - ma) * (ra[i] - ma);
+    sbb += (rb[i] - mb) * (rb[i] - mb);
+  }
+  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : std::nan("");
 }
 
 std::string FormatBrushCheck(const BrushCheck& c, double agreement_required, double load_error_allowed) {
@@ -137,6 +179,8 @@ std::string FormatBrushCheck(const BrushCheck& c, double agreement_required, dou
                      100.0 * c.state_agreement, c.pin_samples, 100.0 * agreement_required, ok_state ? "PASS" : "FAIL");
   out += fmt::format("  transmitted load within {:.2f} % of sum min(k_t u, mu N_i) (allowed {:.0f} %): {}\n",
                      100.0 * c.load_error_max, 100.0 * load_error_allowed, ok_load ? "PASS" : "FAIL");
+  out += fmt::format("  slip order follows normal force: Spearman rank correlation {:.3f} (required >= 0.9): {}\n",
+                     c.slip_order_correlation, c.slip_order_correlation >= 0.9 ? "PASS" : "FAIL");
   return out;
 }
 

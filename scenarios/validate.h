@@ -40,12 +40,18 @@ struct BrushCheck {
   double mu_P_N = 0.0;           ///< mu times the total normal load (the gross-slip load)
   double k_t_N_m = 0.0;          ///< per-pin shear stiffness
   int pins_in_contact = 0;       ///< pins touching the plate after the press
+  /// Spearman rank correlation between each pin's normal force and the displacement at
+  /// which it first slipped (brush model: least-loaded pins slip first, so +1).
+  double slip_order_correlation = 0.0;
 };
 
 /// Presses an uncoupled pin lattice onto a flat plate, shears the plate slowly past
 /// gross slip, and compares every pin's stick/slip state and the transmitted load with
 /// the brush model: pin i sticks while k_t u <= mu N_i, Q = sum_i min(k_t u, mu N_i).
 BrushCheck RunBrushCheck(const BrushCheckOptions& opts);
+
+/// Spearman rank correlation of two equal-length samples (ties get average ranks).
+double SpearmanCorrelation(const std::vector<double>& a, const std::vector<double>& b);
 
 /// Text report of a brush check (for the command line).
 std::string FormatBrushCheck(const BrushCheck& c, double agreement_required, double load_error_allowed);

@@ -189,7 +189,8 @@ int main(int argc, char** argv) {
       const tactip::BrushCheck c = tactip::RunBrushCheck(o);
       constexpr double kAgreement = 0.98, kLoadError = 0.03;
       std::printf("%s", tactip::FormatBrushCheck(c, kAgreement, kLoadError).c_str());
-      const bool ok = c.state_agreement >= kAgreement && c.load_error_max <= kLoadError;
+      const bool ok = c.state_agreement >= kAgreement && c.load_error_max <= kLoadError &&
+                      c.slip_order_correlation >= 0.9;
       if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
       return ok ? 0 : 1;
     }
