@@ -3,6 +3,7 @@
 // evaluation. Detectors see PinFrames only — exactly what TacTip hardware delivers.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -130,6 +131,15 @@ struct TrainingSet {
   std::vector<int> y;        ///< 1 = slip, 0 = static
   std::vector<int> group;    ///< run index of each row (for grouped CV)
 };
+
+/// Streams every run's frames through VelocityFeatures(opts.features) and calls
+/// `visit(run, features, feature_vector, slip)` for each selected training frame: static
+/// frames from first_frame up to the onset, kept with probability static_fraction (one
+/// seeded draw per static frame), and the n_slip slip frames. Throws DetectorInputError
+/// for n_slip outside [1, 15] or static_fraction outside (0, 1].
+void ForEachTrainingFrame(
+    const std::vector<LabeledRun>& runs, const TrainOptions& opts,
+    const std::function<void(const LabeledRun&, const VelocityFeatures&, const Eigen::VectorXf&, bool)>& visit);
 
 /// Builds the training set: for every run, static frames from first_frame up to the
 /// onset (downsampled to static_fraction with a seeded generator), the first n_slip

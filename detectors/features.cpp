@@ -101,7 +101,9 @@ FrameRole RoleOf(const LabeledRun& run, int k, int n_slip) {
   return k >= start && k < start + n_slip ? FrameRole::kSlip : FrameRole::kUnscored;
 }
 
-TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOptions& opts) {
+void ForEachTrainingFrame(
+    const std::vector<LabeledRun>& runs, const TrainOptions& opts,
+    const std::function<void(const LabeledRun&, const VelocityFeatures&, const Eigen::VectorXf&, bool)>& visit) {
   if (opts.n_slip < 1 || opts.n_slip > 15) {
     throw DetectorInputError("n_slip = " + std::to_string(opts.n_slip) + ": must be in [1, 15]");
   }
@@ -109,8 +111,6 @@ TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOpt
     throw DetectorInputError("static fraction = " + std::to_string(opts.static_fraction) + ": must be in (0, 1]");
   }
   std::mt19937_64 gen(opts.seed);
-  std::vector<Eigen::VectorXf> rows;
-  TrainingSet ts;
   for (const LabeledRun& run : runs) {
     // Stream every frame (features need the previous one), keep the labelled window.
     VelocityFeatures feat(opts.features);
@@ -124,11 +124,20 @@ TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOpt
         const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;
         if (u >= opts.static_fraction) continue;
       }
-      rows.push_back(f);
-      ts.y.push_back(slip ? 1 : 0);
-      ts.group.push_back(run.run);
+      visit(run, feat, f, slip);
     }
   }
+}
+
+TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOptions& opts) {
+  std::vector<Eigen::VectorXf> rows;
+  TrainingSet ts;
+  ForEachTrainingFrame(runs, opts,
+                       [&](const LabeledRun& run, const VelocityFeatures&, const Eigen::VectorXf& f, bool slip) {
+                         rows.push_back(f);
+                         ts.y.push_back(slip ? 1 : 0);
+                         ts.group.push_back(run.run);
+                       });
   const int dim = rows.empty() ? 0 : static_cast<int>(rows.front().size());
   ts.x.resize(static_cast<Eigen::Index>(rows.size()), dim);
   for (size_t r = 0; r < rows.size(); ++r) {

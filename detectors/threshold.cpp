@@ -91,32 +91,15 @@ std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& pa
 
 std::unique_ptr<ThresholdDetector> ThresholdDetector::Train(const std::vector<LabeledRun>& runs,
                                                             const TrainOptions& opts) {
-  if (opts.n_slip < 1 || opts.n_slip > 15) {
-    throw DetectorInputError("n_slip = " + std::to_string(opts.n_slip) + ": must be in [1, 15]");
-  }
-  if (!(opts.static_fraction > 0.0 && opts.static_fraction <= 1.0)) {
-    throw DetectorInputError("static fraction = " + std::to_string(opts.static_fraction) + ": must be in (0, 1]");
-  }
-  // Select frames exactly as BuildTrainingSet does (same generator, same draws) and keep
-  // (v, label) for each.
-  std::mt19937_64 gen(opts.seed);
+  // The frames BuildTrainingSet would select (same draws), as (|mean velocity|, label).
   std::vector<std::pair<double, int>> samples;
   long n_pos = 0;
-  for (const LabeledRun& run : runs) {
-    VelocityFeatures feat(FeatureSet::kDr);
-    Eigen::VectorXf f;
-    for (int k = 0; k < static_cast<int>(run.frames.size()); ++k) {
-      const FrameRole role = RoleOf(run, k, opts.n_slip);
-      if (!feat.Update(run.frames[k], f) || role == FrameRole::kUnscored) continue;
-      const bool slip = role == FrameRole::kSlip;
-      if (!slip) {
-        const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;
-        if (u >= opts.static_fraction) continue;
-      }
-      samples.emplace_back(static_cast<double>(feat.mean_velocity().norm()), slip ? 1 : 0);
-      n_pos += slip ? 1 : 0;
-    }
-  }
+  TrainOptions dr = opts;
+  dr.features = FeatureSet::kDr;  // the cheapest variant; only the mean velocity is used
+  ForEachTrainingFrame(runs, dr, [&](const LabeledRun&, const VelocityFeatures& feat, const Eigen::VectorXf&, bool slip) {
+    samples.emplace_back(static_cast<double>(feat.mean_velocity().norm()), slip ? 1 : 0);
+    n_pos += slip ? 1 : 0;
+  });
   if (n_pos == 0) throw DetectorInputError("threshold training: the selected frames hold no slip frame");
   for (const auto& [v, label] : samples) {
     if (!std::isfinite(v)) throw DetectorInputError("threshold training: a frame has a non-finite pin velocity");

@@ -14,24 +14,7 @@ std::string BuildContactRig(const ContactRigSpec& spec) {
   const auto collidable = RailCollidablePins(spec.skin, lattice, flat, spec.max_depth_m);
   SkinPart skin = BuildSmoothSkin(spec.skin, spec.contact, lattice, collidable);
 
-  mjcf::Element root("mujoco");
-  root.Set("model", "tactip_contact_rig");
-  root.Add("compiler").Set("angle", "radian").Set("inertiafromgeom", "false");
-  root.Add("option")
-      .Set("timestep", spec.sim.timestep_s)
-      .Set("integrator", "Euler")
-      .Set("solver", "Newton")
-      .Set("jacobian", "auto")
-      .Set("cone", spec.sim.cone)
-      .Set("impratio", spec.sim.impratio)
-      .SetInt("iterations", spec.sim.iterations)
-      .Set("tolerance", spec.sim.tolerance)
-      .SetInt("noslip_iterations", spec.sim.noslip_iterations)
-      .Set("noslip_tolerance", spec.sim.noslip_tolerance)
-      .Set("gravity", std::vector<double>{0, 0, 0});
-  const int nconmax = skin.n_collidable + 8;
-  const int rows_per_contact = spec.sim.cone == "pyramidal" ? 4 : 3;  // condim 3
-  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16);
+  mjcf::Element root = SceneRoot("tactip_contact_rig", spec.sim, 0.0, skin.n_collidable);
 
   mjcf::Element& world = root.Add("worldbody");
   // Sensor fixed in the world, dome centre at x = -R so the apex is at x = 0.

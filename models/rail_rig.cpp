@@ -53,6 +53,30 @@ double SensorMassKg(const SkinMechanics& mech, size_t n_pins) {
 }
 }  // namespace
 
+mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, double gravity_z, int n_collidable) {
+  mjcf::Element root("mujoco");
+  root.Set("model", model_name);
+  root.Add("compiler").Set("angle", "radian").Set("inertiafromgeom", "false");
+  root.Add("option")
+      .Set("timestep", sim.timestep_s)
+      .Set("integrator", "Euler")
+      .Set("solver", "Newton")
+      .Set("jacobian", "auto")
+      .Set("cone", sim.cone)
+      .Set("impratio", sim.impratio)
+      .SetInt("iterations", sim.iterations)
+      .Set("tolerance", sim.tolerance)
+      .SetInt("noslip_iterations", sim.noslip_iterations)
+      .Set("noslip_tolerance", sim.noslip_tolerance)
+      .Set("gravity", V3(0, 0, gravity_z));
+  // Contact budget: one contact per collidable pin plus spare; constraint rows for
+  // condim-3 contacts (3 elliptic, 4 pyramidal) plus joint limits and dry friction.
+  const int nconmax = n_collidable + 8;
+  const int rows_per_contact = sim.cone == "pyramidal" ? 4 : 3;
+  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16);
+  return root;
+}
+
 StiffMode RailStiffestMode(const RailSceneSpec& spec) {
   const PinLattice lattice = PinLattice::Build(spec.skin);
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
@@ -77,26 +101,7 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   SkinPart skin = BuildSmoothSkin(spec.skin, spec.contact, lattice, collidable);
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
 
-  mjcf::Element root("mujoco");
-  root.Set("model", "tactip_rail");
-  root.Add("compiler").Set("angle", "radian").Set("inertiafromgeom", "false");
-  root.Add("option")
-      .Set("timestep", spec.sim.timestep_s)
-      .Set("integrator", "Euler")
-      .Set("solver", "Newton")
-      .Set("jacobian", "auto")
-      .Set("cone", spec.sim.cone)
-      .Set("impratio", spec.sim.impratio)
-      .SetInt("iterations", spec.sim.iterations)
-      .Set("tolerance", spec.sim.tolerance)
-      .SetInt("noslip_iterations", spec.sim.noslip_iterations)
-      .Set("noslip_tolerance", spec.sim.noslip_tolerance)
-      .Set("gravity", V3(0, 0, -9.81));
-  // Contact budget: one contact per collidable pin plus spare; rows for elliptic
-  // contacts (3 each), the rail stop and the rail friction.
-  const int nconmax = skin.n_collidable + 8;
-  const int rows_per_contact = spec.sim.cone == "pyramidal" ? 4 : 3;  // condim 3
-  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16);
+  mjcf::Element root = SceneRoot("tactip_rail", spec.sim, -9.81, skin.n_collidable);
 
   mjcf::Element& world = root.Add("worldbody");
   world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));

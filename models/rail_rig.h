@@ -121,6 +121,10 @@ struct RailNames {
 std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
                                      double max_depth_m);
 
+/// A scene root: model name, compiler settings, solver options from `sim`, and a contact
+/// budget for `n_collidable` pin contacts plus spare (rows sized for the cone type).
+mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, double gravity_z, int n_collidable);
+
 /// Everything a rail scene is built from.
 struct RailSceneSpec {
   SimConfig sim;
