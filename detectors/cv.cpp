@@ -330,6 +330,27 @@ bool ModelTextReader::AtEnd() const {
   return text_.find_first_not_of(" \t\r\n", pos_) == std::string::npos;
 }
 
+FeatureSet ModelTextReader::ReadFeatures() {
+  const std::string name = ExpectKey("features", 1)[0];
+  try {
+    return ParseFeatureSet(name);
+  } catch (const DetectorInputError& e) {
+    Fail(e.what());
+  }
+}
+
+double ModelTextReader::ReadC() {
+  const double c = ParseDouble(ExpectKey("C", 1)[0], "C");
+  if (!(c > 0.0)) Fail("C must be > 0");
+  return c;
+}
+
+int ModelTextReader::ReadDim() {
+  const int dim = ParseInt(ExpectKey("dim", 1)[0], "dim");
+  if (dim < 1 || dim > 1000000) Fail("dim must be in [1, 1000000]");
+  return dim;
+}
+
 TempFile::TempFile() {
   std::error_code ec;
   std::filesystem::path dir = std::filesystem::temp_directory_path(ec);

@@ -120,6 +120,12 @@ class ModelTextReader {
   int ParseInt(const std::string& token, std::string_view what) const;
   /// Reads "mean ..." and "inv_std ..." lines of `dim` values each (inv_std finite and > 0).
   Standardizer ReadStandardizer(int dim);
+  /// Reads the "features <name>" line shared by the classifier models.
+  FeatureSet ReadFeatures();
+  /// Reads the "C <value>" line (must be > 0) shared by the classifier models.
+  double ReadC();
+  /// Reads the "dim <d>" line (1 .. 1000000) shared by the classifier models.
+  int ReadDim();
   /// The text after the last line read (e.g. an embedded libsvm model).
   std::string Rest() const;
   /// 1-based number of the last line read.

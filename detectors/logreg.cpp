@@ -207,17 +207,9 @@ std::unique_ptr<LogRegDetector> LogRegDetector::FromText(const std::string& text
   if (head[0] != "logreg") r.Fail("detector kind '" + head[0] + "' is not logreg");
   if (head[1] != "1") r.Fail("unsupported model version '" + head[1] + "' (this build reads 1)");
   // Parameters.
-  const std::string feature_name = r.ExpectKey("features", 1)[0];
-  FeatureSet features = FeatureSet::kDrDtheta;
-  try {
-    features = ParseFeatureSet(feature_name);
-  } catch (const DetectorInputError& e) {
-    r.Fail(e.what());
-  }
-  const double c = r.ParseDouble(r.ExpectKey("C", 1)[0], "C");
-  if (!(c > 0.0)) r.Fail("C must be > 0");
-  const int dim = r.ParseInt(r.ExpectKey("dim", 1)[0], "dim");
-  if (dim < 1 || dim > 1000000) r.Fail("dim must be in [1, 1000000]");
+  const FeatureSet features = r.ReadFeatures();
+  const double c = r.ReadC();
+  const int dim = r.ReadDim();
   Standardizer standardizer = r.ReadStandardizer(dim);
   // The embedded liblinear model.
   r.ExpectExact("liblinear-model");
