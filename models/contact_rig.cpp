@@ -12,14 +12,14 @@ std::string BuildContactRig(const ContactRigSpec& spec) {
   RailConfig flat;
   flat.stimulus = "flat";
   const auto collidable = RailCollidablePins(spec.skin, lattice, flat, spec.max_depth_m);
-  SkinPart skin = BuildSmoothSkin(spec.skin, spec.contact, lattice, collidable);
+  SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s);
 
   mjcf::Element root = SceneRoot("tactip_contact_rig", spec.sim, 0.0, skin.n_collidable);
 
   mjcf::Element& world = root.Add("worldbody");
   // Sensor fixed in the world, dome centre at x = -R so the apex is at x = 0.
   mjcf::Element& sensor = world.Add("body");
-  sensor.Set("name", ContactRigNames::kSensor).Set("pos", std::vector<double>{-spec.skin.radius_mm * 1e-3, 0, 0});
+  sensor.Set("name", ContactRigNames::kSensor).Set("pos", std::vector<double>{-spec.skin.OuterRadiusMm() * 1e-3, 0, 0});
   sensor.Append(std::move(skin.body));
 
   // Plate carriage: normal and tangential slide joints under stiff, critically damped servos.

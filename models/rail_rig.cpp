@@ -22,12 +22,12 @@ double RailConfig::StimulusRadiusM() const {
 
 double ArmConfig::Omega(double moving_mass_kg) const { return std::sqrt(kp_N_m / moving_mass_kg); }
 
-double SensorCentreX(const SkinConfig& skin, double gap_m) { return -skin.radius_mm * 1e-3 - gap_m; }
+double SensorCentreX(const SkinConfig& skin, double gap_m) { return -skin.OuterRadiusMm() * 1e-3 - gap_m; }
 
 std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
                                      double max_depth_m) {
-  const double R = skin.radius_mm * 1e-3;
-  const double rc = skin.contact_radius_mm * 1e-3;
+  const double R = skin.OuterRadiusMm() * 1e-3;
+  const double rc = skin.ContactRadiusMm() * 1e-3;
   const double Rc = rail.StimulusRadiusM();
   const double cx = -R + max_depth_m;  // dome centre at the deepest press
   std::vector<bool> out(lattice.size());
@@ -79,12 +79,24 @@ mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, dou
 
 StiffMode RailStiffestMode(const RailSceneSpec& spec) {
   const PinLattice lattice = PinLattice::Build(spec.skin);
-  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
   StiffMode mode;
   mode.omega = mech.StiffestOmega();
   mode.zeta = mech.pin_damping_Ns_m / (2.0 * mech.pin_mass_kg * mode.omega);
   mode.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, "
               "skin.thickness_mm, skin.pin_mass_g)";
+  if (spec.skin.coupling == "membrane") {
+    // The shear mode's damping is raised to keep it stable, so it is reported for
+    // completeness; it binds only if the normal mode and the arm allow more.
+    const double w = mech.StiffestShearOmega();
+    const double zeta = mech.TipDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * w);
+    if (MaxStableTimestep(w, zeta) < MaxStableTimestep(mode.omega, mode.zeta)) {
+      mode.omega = w;
+      mode.zeta = zeta;
+      mode.name = "the membrane lattice's shear mode (set by skin.thickness_mm, skin.skin_modulus_mpa, "
+                  "skin.ridge_*, skin.pin_mass_g)";
+    }
+  }
   // The z servo carries less mass than the x servo, so it is the stiffer of the two.
   const double w_arm = spec.arm.Omega(spec.arm.stage_mass_kg + SensorMassKg(mech, lattice.size()));
   if (w_arm > mode.omega) {
@@ -98,7 +110,7 @@ StiffMode RailStiffestMode(const RailSceneSpec& spec) {
 BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   const PinLattice lattice = PinLattice::Build(spec.skin);
   const std::vector<bool> collidable = RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m);
-  SkinPart skin = BuildSmoothSkin(spec.skin, spec.contact, lattice, collidable);
+  SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s);
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
 
   mjcf::Element root = SceneRoot("tactip_rail", spec.sim, -9.81, skin.n_collidable);
@@ -141,8 +153,9 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
       .Set("rgba", std::vector<double>{0.85, 0.6, 0.2, 1});
   const double Rc = spec.rail.StimulusRadiusM();
   if (Rc == 0.0) {
-    // Flat: a 50 x 50 mm plate whose face is the plane x = 0.
+    // Flat: a 50 x 50 x 10 mm plate whose face is the plane x = 0 (clear for acrylic).
     stim.Set("type", "box").Set("pos", V3(0.005, 0, 0)).Set("size", V3(0.005, 0.025, 0.025));
+    if (spec.rail.stimulus == "acrylic") stim.Set("rgba", std::vector<double>{0.8, 0.9, 1.0, 0.3});
   } else {
     // Curved: a sphere cap of radius Rc, apex at x = 0, on a visual base plate.
     stim.Set("type", "sphere").Set("pos", V3(Rc, 0, 0)).Set("size", std::vector<double>{Rc});
@@ -178,7 +191,7 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
       .Set("type", "cylinder")
       .Set("pos", V3(-0.03, 0, 0))
       .Set("zaxis", V3(1, 0, 0))
-      .Set("size", std::vector<double>{spec.skin.radius_mm * 1e-3 + 0.003, 0.028})
+      .Set("size", std::vector<double>{spec.skin.OuterRadiusMm() * 1e-3 + 0.003, 0.028})
       .SetInt("contype", 0)
       .SetInt("conaffinity", 0)
       .Set("rgba", std::vector<double>{0.15, 0.15, 0.15, 1});

@@ -27,7 +27,7 @@ struct ObjectConfig {
 
 /// Rail rig and protocol (the `rail.` section).
 struct RailConfig {
-  std::string stimulus = "flat";       ///< flat, curved80, curved40, curved20
+  std::string stimulus = "flat";       ///< flat, acrylic, curved80, curved40, curved20
   double friction_N = 0.005;           ///< rail dry friction (MuJoCo joint frictionloss)
   double damping_Ns_m = 0.02;          ///< rail viscous damping
   double press_depth_mm = 3.0;         ///< indentation at the apex
@@ -44,9 +44,10 @@ struct RailConfig {
   template <class V>
   void Visit(V& v) {
     v("stimulus", stimulus, "",
-      "Stimulus on the slider: flat, or curved (sphere cap, apex height 20 mm) with radius of curvature "
-      "80, 40 or 20 mm.",
-      Choices{"flat", "curved80", "curved40", "curved20"});
+      "Stimulus on the slider: flat (10 mm plate), acrylic (the same plate in clear acrylic: the external camera "
+      "sees the skin through it), or curved (sphere cap, apex height 20 mm) with radius of curvature 80, 40 or "
+      "20 mm.",
+      Choices{"flat", "acrylic", "curved80", "curved40", "curved20"});
     v("friction_N", friction_N, "N",
       "Dry friction of the linear rail (recirculating-ball rails: a few mN). Holds the object together "
       "with the skin: slip when mu * sum(N) + friction_N < m g.",

@@ -13,32 +13,64 @@ constexpr double kSkinDensity = 1100.0;  // kg/m^3, silicone rubber
 constexpr double kSkinPoisson = 0.5;     // rubber is nearly incompressible
 }  // namespace
 
+double SkinConfig::OuterRadiusMm() const { return radius_mm + (Fingerprint() ? ridge_height_mm : 0.0); }
+
+double SkinConfig::ContactRadiusMm() const {
+  return Fingerprint() ? std::min(contact_radius_mm, 0.5 * ridge_spacing_mm) : contact_radius_mm;
+}
+
+std::vector<std::string> SkinPreset(const std::string& name) {
+  if (name == "smooth") return {"skin.pattern=smooth", "skin.coupling=shell"};
+  if (name == "fingerprint-v1") {
+    return {"skin.pattern=fingerprint-v1", "skin.coupling=membrane", "skin.ridge_spacing_mm=4",
+            "skin.ridge_height_mm=2",      "skin.ridge_shape=square",  "skin.thickness_mm=0.5",
+            "skin.pin_length_mm=2",        "skin.pins_per_ring=6",     "skin.pattern_radius_mm=20"};
+  }
+  if (name == "fingerprint-v2") {
+    return {"skin.pattern=fingerprint-v2", "skin.coupling=membrane", "skin.ridge_spacing_mm=3",
+            "skin.ridge_height_mm=2",      "skin.ridge_shape=sine",    "skin.thickness_mm=1",
+            "skin.pin_length_mm=1",        "skin.pins_per_ring=6",     "skin.pattern_radius_mm=18"};
+  }
+  throw InputError("--skin '" + name + "': unknown skin (known: smooth, fingerprint-v1, fingerprint-v2)");
+}
+
 void SkinConfig::ValidateRules() const {
-  const double alpha_max = rings * pitch_mm / radius_mm;
+  const double reach_mm = Fingerprint() ? pattern_radius_mm : rings * pitch_mm;
+  const double alpha_max = reach_mm / radius_mm;
   if (alpha_max >= 0.5 * std::numbers::pi) {
-    FailRule("skin.rings", rings,
-             fmt::format("lattice reaches {:.2f} rad from the apex; rings * pitch_mm must be < pi/2 * radius_mm "
-                         "({:.1f} mm)",
+    const char* key = Fingerprint() ? "skin.pattern_radius_mm" : "skin.rings";
+    FailRule(key, Fingerprint() ? pattern_radius_mm : rings,
+             fmt::format("lattice reaches {:.2f} rad from the apex; it must stay within pi/2 * radius_mm "
+                         "({:.1f} mm of arc)",
                          alpha_max, 0.5 * std::numbers::pi * radius_mm));
+  }
+  if (Fingerprint() && pattern_radius_mm < ridge_spacing_mm) {
+    FailRule("skin.pattern_radius_mm", pattern_radius_mm, "must be >= skin.ridge_spacing_mm (at least one ring)");
   }
   if (thickness_mm + pin_length_mm >= radius_mm) {
     FailRule("skin.pin_length_mm", pin_length_mm, "thickness_mm + pin_length_mm must be < radius_mm");
+  }
+  if (pattern == "fingerprint-v2" && pin_length_mm > ridge_height_mm + thickness_mm) {
+    FailRule("skin.pin_length_mm", pin_length_mm,
+             "fingerprint-v2 pins run from the wave peak through the skin: must be <= ridge_height_mm + thickness_mm");
   }
   if (contact_radius_mm >= radius_mm) {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
   }
 }
 
-PinLattice PinLattice::Build(const SkinConfig& skin) {
+namespace {
+
+struct Planar {
+  int ring;
+  double az;
+  double x, y;
+};
+
+// Hexagonal lattice in axial coordinates (q, r); hex distance = ring.
+std::vector<Planar> HexLayout(const SkinConfig& skin) {
   const double a = skin.pitch_mm * 1e-3;
-  const double R = skin.radius_mm * 1e-3;
-  struct Planar {
-    int ring;
-    double az;
-    double x, y;
-  };
   std::vector<Planar> pts;
-  // Hexagonal lattice in axial coordinates (q, r); hex distance = ring.
   for (int q = -skin.rings; q <= skin.rings; ++q) {
     for (int r = -skin.rings; r <= skin.rings; ++r) {
       const int ring = std::max({std::abs(q), std::abs(r), std::abs(q + r)});
@@ -51,6 +83,31 @@ PinLattice PinLattice::Build(const SkinConfig& skin) {
       pts.push_back({ring, az, x, y});
     }
   }
+  return pts;
+}
+
+// Concentric rings k * spacing (k = 0..K) with pins_per_ring * k pins on ring k.
+std::vector<Planar> RingLayout(const SkinConfig& skin) {
+  const double s = skin.ridge_spacing_mm * 1e-3;
+  const int K = static_cast<int>(std::floor(skin.pattern_radius_mm / skin.ridge_spacing_mm + 1e-9));
+  std::vector<Planar> pts{{0, 0.0, 0.0, 0.0}};
+  for (int k = 1; k <= K; ++k) {
+    const int n = skin.pins_per_ring * k;
+    for (int j = 0; j < n; ++j) {
+      const double az = 2.0 * std::numbers::pi * j / n;
+      pts.push_back({k, az, k * s * std::cos(az), k * s * std::sin(az)});
+    }
+  }
+  return pts;
+}
+
+double Dist(const Planar& p, const Planar& q) { return std::hypot(p.x - q.x, p.y - q.y); }
+
+}  // namespace
+
+PinLattice PinLattice::Build(const SkinConfig& skin) {
+  const double R = skin.radius_mm * 1e-3;
+  std::vector<Planar> pts = skin.Fingerprint() ? RingLayout(skin) : HexLayout(skin);
   std::sort(pts.begin(), pts.end(), [](const Planar& p, const Planar& q) {
     if (p.ring != q.ring) return p.ring < q.ring;
     return p.az < q.az;
@@ -68,45 +125,145 @@ PinLattice PinLattice::Build(const SkinConfig& skin) {
                 std::sin(g.polar_rad) * std::sin(g.azimuth_rad)};
     lat.pins.push_back(g);
   }
-  // Neighbours: planar distance equal to the pitch.
-  for (size_t i = 0; i < pts.size(); ++i) {
-    for (size_t j = i + 1; j < pts.size(); ++j) {
-      const double d = std::hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y);
-      if (std::abs(d - a) < 1e-6 * a) lat.neighbours.push_back({static_cast<int>(i), static_cast<int>(j)});
+  if (!skin.Fingerprint()) {
+    // Neighbours: planar distance equal to the pitch.
+    const double a = skin.pitch_mm * 1e-3;
+    for (size_t i = 0; i < pts.size(); ++i) {
+      for (size_t j = i + 1; j < pts.size(); ++j) {
+        if (std::abs(Dist(pts[i], pts[j]) - a) < 1e-6 * a) {
+          lat.neighbours.push_back({static_cast<int>(i), static_cast<int>(j)});
+        }
+      }
+    }
+    return lat;
+  }
+  // Rings: consecutive pins along a ring, and each pin to its nearest pin(s) on the ring
+  // inside it (the second nearest too when almost as close), which triangulates the band.
+  std::vector<std::array<int, 2>> edges;
+  auto add = [&](size_t i, size_t j) { edges.push_back({static_cast<int>(std::min(i, j)), static_cast<int>(std::max(i, j))}); };
+  std::vector<size_t> first{0};  // first index of each ring
+  for (size_t i = 1; i < pts.size(); ++i) {
+    if (pts[i].ring != pts[i - 1].ring) first.push_back(i);
+  }
+  first.push_back(pts.size());
+  for (size_t k = 1; k + 1 < first.size(); ++k) {
+    const size_t b = first[k], e = first[k + 1];
+    if (e - b >= 2) {
+      for (size_t i = b; i < e; ++i) {
+        const size_t j = (i + 1 < e) ? i + 1 : b;
+        if (j != i && !(e - b == 2 && i == e - 1)) add(i, j);
+      }
+    }
+    const size_t ib = first[k - 1], ie = first[k];
+    for (size_t i = b; i < e; ++i) {
+      size_t best = ib, second = ib;
+      double d1 = 1e9, d2 = 1e9;
+      for (size_t j = ib; j < ie; ++j) {
+        const double d = Dist(pts[i], pts[j]);
+        if (d < d1) {
+          d2 = d1;
+          second = best;
+          d1 = d;
+          best = j;
+        } else if (d < d2) {
+          d2 = d;
+          second = j;
+        }
+      }
+      add(i, best);
+      if (second != best && d2 < 1.25 * d1) add(i, second);
     }
   }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  lat.neighbours = std::move(edges);
   return lat;
 }
 
 SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   SkinMechanics m;
-  const double a = skin.pitch_mm * 1e-3;
   const double E_gel = skin.gel_modulus_kpa * 1e3;
   const double h_gel = skin.gel_depth_mm * 1e-3;
   const double E_skin = skin.skin_modulus_mpa * 1e6;
   const double t = skin.thickness_mm * 1e-3;
   const double R = skin.radius_mm * 1e-3;
+  const double D = E_skin * t * t * t / (12.0 * (1.0 - kSkinPoisson * kSkinPoisson));
+  double a = skin.pitch_mm * 1e-3;  // neighbour distance
+  double reach = skin.rings * a;    // arc radius of the lattice
+  if (skin.Fingerprint()) {
+    // A pin's cell: one ring step by the arc per pin, 2 pi k s / (ppr k).
+    a = skin.ridge_spacing_mm * 1e-3;
+    const double b = 2.0 * std::numbers::pi * a / skin.pins_per_ring;
+    m.cell_area_m2 = a * b;
+    reach = skin.pattern_radius_mm * 1e-3;
+    // Ridge rocking: a ridge of base width w = s / 2 (with its pin) tilts on the gel
+    // (Winkler foundation, k_theta = (E/h) b w^3 / 12) against the skin hinges in the
+    // valleys on both sides (plate bending, 2 D b / valley). At the contact point,
+    // k_rock = k_theta / lever^2.
+    const double w = 0.5 * a, valley = a - w;
+    const double k_theta = (E_gel / h_gel) * b * w * w * w / 12.0 + 2.0 * D * b / valley;
+    const double h = skin.ridge_height_mm * 1e-3;
+    const double lever = skin.ridge_shape == "square" ? h : 0.5 * h;
+    m.k_rock_N_m = k_theta / (lever * lever);
+    // The camera sees v1's pin inner end a skin thickness below the pivot at the ridge
+    // root, so it moves against the contact point; v2's pins run through the skin at
+    // the peak and move with the skin under it.
+    m.marker_rock_factor = skin.pattern == "fingerprint-v1" ? 1.0 + t / lever : 1.0;
+  } else {
+    m.cell_area_m2 = std::sqrt(3.0) / 2.0 * a * a;
+  }
   // Gel column under each pin (Winkler foundation): axial and shear stiffness.
-  m.cell_area_m2 = std::sqrt(3.0) / 2.0 * a * a;
   m.k_normal_N_m = E_gel * m.cell_area_m2 / h_gel;
   m.k_shear_N_m = (E_gel / 3.0) * m.cell_area_m2 / h_gel;
   // Skin plate bending: D / a^2 couples neighbouring pins' normal displacements.
-  const double D = E_skin * t * t * t / (12.0 * (1.0 - kSkinPoisson * kSkinPoisson));
   m.k_bend_N_m = D / (a * a);
   m.membrane_N_m = E_skin * t;
+  // Per-pin shear DOFs: the contact point rides on the gel in series with the ridge.
+  const auto series = [](double k1, double k2) { return 1.0 / (1.0 / k1 + 1.0 / k2); };
+  m.k_tip_N_m = m.k_rock_N_m > 0.0 ? series(m.k_shear_N_m, m.k_rock_N_m) : m.k_shear_N_m;
+  // A triangular spring network with springs k has a 2-D Young's modulus 2k / sqrt 3.
+  m.k_link_N_m = std::sqrt(3.0) / 2.0 * m.membrane_N_m;
+  m.k_couple_N_m = m.k_rock_N_m > 0.0 ? 1.0 / (1.0 / m.k_link_N_m + 2.0 / m.k_rock_N_m) : m.k_link_N_m;
   m.pin_mass_kg = skin.pin_mass_g * 1e-3;
-  const double alpha_max = skin.rings * a / R;
+  const double alpha_max = reach / R;
   m.shell_mass_kg = kSkinDensity * t * 2.0 * std::numbers::pi * R * R * (1.0 - std::cos(alpha_max));
   // Damping from the requested damping ratio of each mode.
   m.pin_damping_Ns_m = 2.0 * skin.damping_ratio * std::sqrt(m.k_normal_N_m * m.pin_mass_kg);
   const double n = static_cast<double>(n_pins);
   const double shell_total_mass = m.shell_mass_kg + n * m.pin_mass_kg;
   m.shell_damping_Ns_m = 2.0 * skin.shear_damping_ratio * std::sqrt(n * m.k_shear_N_m * shell_total_mass);
+  m.tip_damping_Ns_m = 2.0 * skin.shear_damping_ratio * std::sqrt(m.k_tip_N_m * m.pin_mass_kg);
+  return m;
+}
+
+SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& lattice) {
+  SkinMechanics m = From(skin, lattice.size());
+  std::vector<int> degree(lattice.size(), 0);
+  for (const auto& e : lattice.neighbours) {
+    ++degree[e[0]];
+    ++degree[e[1]];
+  }
+  m.max_degree = degree.empty() ? 0 : *std::max_element(degree.begin(), degree.end());
   return m;
 }
 
 double SkinMechanics::StiffestOmega() const {
   return std::sqrt((k_normal_N_m + 12.0 * k_bend_N_m) / pin_mass_kg);
+}
+
+double SkinMechanics::StiffestShearOmega() const {
+  return std::sqrt((k_tip_N_m + 2.0 * max_degree * k_couple_N_m) / pin_mass_kg);
+}
+
+double SkinMechanics::TipDamping(double timestep_s) const {
+  // The tendon springs are integrated explicitly; joint damping implicitly. Raise the
+  // damping until the stiffest shear mode is stable at the timestep with a 20 % margin:
+  // MaxStableTimestep(omega, zeta) >= 1.2 dt.
+  const double w = StiffestShearOmega();
+  const double x = 1.2 * timestep_s * w / (0.9 * 2.0);  // needed zeta + sqrt(zeta^2 + 1)
+  const double zeta = x > 1.0 ? (x * x - 1.0) / (2.0 * x) : 0.0;
+  const double floor = 2.0 * zeta * std::sqrt(w * w * pin_mass_kg * pin_mass_kg);
+  return std::max(tip_damping_Ns_m, floor);
 }
 
 std::string SkinNames::PinBody(int i) { return fmt::format("pin{}", i); }
@@ -116,30 +273,39 @@ std::string SkinNames::PinGeom(int i) { return fmt::format("pin{}_pad", i); }
 std::string SkinNames::PinSite(int i) { return fmt::format("pin{}_inner", i); }
 std::string SkinNames::PinOuterSite(int i) { return fmt::format("pin{}_outer", i); }
 
-SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
-                         const std::vector<bool>& collidable) {
-  const SkinMechanics mech = SkinMechanics::From(skin, lattice.size());
+SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
+                   const std::vector<bool>& collidable, double timestep_s) {
+  const SkinMechanics mech = SkinMechanics::From(skin, lattice);
   const double R = skin.radius_mm * 1e-3;
-  const double rc = skin.contact_radius_mm * 1e-3;
-  const double r_inner = R - (skin.thickness_mm + skin.pin_length_mm) * 1e-3;
+  const double R_out = skin.OuterRadiusMm() * 1e-3;
+  const double rc = skin.ContactRadiusMm() * 1e-3;
+  // The marker the internal camera sees: the inner end of the pin.
+  double r_marker = R - (skin.thickness_mm + skin.pin_length_mm) * 1e-3;
+  if (skin.pattern == "fingerprint-v1") r_marker = R - skin.thickness_mm * 1e-3;  // pins reach out into the ridges
+  if (skin.pattern == "fingerprint-v2") r_marker = R_out - skin.pin_length_mm * 1e-3;  // through the skin at the peak
   const double n = static_cast<double>(lattice.size());
+  const bool shell_mode = skin.coupling == "shell";
+  const bool membrane = skin.coupling == "membrane";
+  const double c_tip = membrane ? mech.TipDamping(timestep_s) : mech.tip_damping_Ns_m;
 
   SkinPart part;
   part.collidable = collidable;
-  // The skin shell: in-plane translation of the whole skin on the gel (shear springs
-  // of all pins in parallel). The membrane's in-plane stiffness E t is two to three
-  // orders of magnitude above a pin's gel shear stiffness, so pins move together
-  // tangentially and each has its own normal DOF.
+  // The skin shell. In shell mode it translates in-plane on the gel (shear springs of
+  // all pins in parallel): the membrane's in-plane stiffness E t is two to three orders
+  // of magnitude above a pin's gel shear stiffness, so pins move together tangentially
+  // and each has its own normal DOF. Otherwise it is fixed and pins shear on their own.
   mjcf::Element& shell = part.body;
   shell.Set("name", SkinNames::kShell);
-  shell.Comment(fmt::format("smooth TacTip: {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} N/m, "
-                            "membrane E*t {:.3g} N/m",
-                            lattice.size(), mech.k_normal_N_m, mech.k_shear_N_m, mech.k_bend_N_m, mech.membrane_N_m));
+  shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
+                            "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
+                            "shear damping {:.3g} N s/m",
+                            skin.pattern, skin.coupling, lattice.size(), mech.k_normal_N_m, mech.k_shear_N_m,
+                            mech.k_bend_N_m, mech.membrane_N_m, mech.k_rock_N_m, mech.k_tip_N_m, mech.k_couple_N_m,
+                            c_tip));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
-  const bool coupled = skin.coupling == "shell";
   for (const char* axis : {"y", "z"}) {
-    if (!coupled) break;  // uncoupled lattice: the shell is fixed, pins shear on their own
+    if (!shell_mode) break;
     shell.Add("joint")
         .Set("name", std::string("skin_shear_") + axis)
         .Set("type", "slide")
@@ -147,32 +313,37 @@ SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, c
         .Set("stiffness", n * mech.k_shear_N_m)
         .Set("damping", mech.shell_damping_Ns_m);
   }
+  // In a membrane lattice, pins that cannot touch anything carry no DOFs: the skin
+  // beyond the contact anchors its neighbours through the coupling springs.
+  std::vector<bool> moving(lattice.size(), true);
+  if (membrane) moving = collidable;
   // One body per pin: a normal slide joint on its gel column, a spherical contact
-  // patch whose outer surface lies on the dome, and sites at both ends.
+  // patch whose outer surface lies on the contact surface, and sites at both ends.
   for (const auto& pin : lattice.pins) {
     const int i = pin.index;
     const auto& nrm = pin.normal;
-    const double rb = R - rc;  // body origin = centre of the contact sphere
+    const double rb = R_out - rc;  // body origin = centre of the contact sphere
     mjcf::Element& b = shell.Add("body");
     b.Set("name", SkinNames::PinBody(i)).Set("pos", std::vector<double>{rb * nrm[0], rb * nrm[1], rb * nrm[2]});
     b.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.pin_mass_kg)
         .Set("diaginertia", std::vector<double>{1e-9, 1e-9, 1e-9});
-    b.Add("joint")
-        .Set("name", SkinNames::PinJoint(i))
-        .Set("type", "slide")
-        .Set("axis", std::vector<double>{1, 0, 0})
-        .Set("stiffness", mech.k_normal_N_m)
-        .Set("damping", mech.pin_damping_Ns_m);
-    if (!coupled) {
-      // Brush model: each pin's own gel shear springs.
-      const double c_shear = 2.0 * skin.shear_damping_ratio * std::sqrt(mech.k_shear_N_m * mech.pin_mass_kg);
+    if (moving[i]) {
+      b.Add("joint")
+          .Set("name", SkinNames::PinJoint(i))
+          .Set("type", "slide")
+          .Set("axis", std::vector<double>{1, 0, 0})
+          .Set("stiffness", mech.k_normal_N_m)
+          .Set("damping", mech.pin_damping_Ns_m);
+    }
+    if (!shell_mode && moving[i]) {
+      // The pin's own shear springs: gel column (in series with its ridge).
       for (char axis : {'y', 'z'}) {
         b.Add("joint")
             .Set("name", SkinNames::PinShearJoint(i, axis))
             .Set("type", "slide")
             .Set("axis", axis == 'y' ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
-            .Set("stiffness", mech.k_shear_N_m)
-            .Set("damping", c_shear);
+            .Set("stiffness", mech.k_tip_N_m)
+            .Set("damping", c_tip);
       }
     }
     if (collidable[i]) {
@@ -189,20 +360,34 @@ SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, c
           .Set("rgba", std::vector<double>{0.9, 0.9, 0.9, 1});
       ++part.n_collidable;
     }
-    const double inner = r_inner - rb;
+    const double inner = r_marker - rb;
     b.Add("site").Set("name", SkinNames::PinSite(i)).Set("pos", std::vector<double>{inner * nrm[0], inner * nrm[1], inner * nrm[2]})
         .Set("size", std::vector<double>{0.0005});
     b.Add("site").Set("name", SkinNames::PinOuterSite(i)).Set("pos", std::vector<double>{rc * nrm[0], rc * nrm[1], rc * nrm[2]})
         .Set("size", std::vector<double>{0.0003});
   }
-  // Skin bending couples the normal motion of neighbouring pins.
-  if (coupled && mech.k_bend_N_m > 0.0) {
+  // A spring between two DOFs (or from one DOF to the anchored skin) as a fixed tendon.
+  auto spring = [&](const std::string& name, const std::string& j0, bool m0, const std::string& j1, bool m1,
+                    double k) {
+    if ((!m0 && !m1) || k <= 0.0) return;
+    mjcf::Element t("fixed");
+    t.Set("name", name).Set("stiffness", k);
+    if (m0) t.Add("joint").Set("joint", j0).Set("coef", 1.0);
+    if (m1) t.Add("joint").Set("joint", j1).Set("coef", -1.0);
+    part.tendons.push_back(std::move(t));
+  };
+  // Skin bending couples the normal motion of neighbouring pins; in a membrane lattice
+  // the membrane (through the ridges) couples their shear motion.
+  if (skin.coupling != "none") {
     for (const auto& e : lattice.neighbours) {
-      mjcf::Element t("fixed");
-      t.Set("name", fmt::format("bend_{}_{}", e[0], e[1])).Set("stiffness", mech.k_bend_N_m);
-      t.Add("joint").Set("joint", SkinNames::PinJoint(e[0])).Set("coef", 1.0);
-      t.Add("joint").Set("joint", SkinNames::PinJoint(e[1])).Set("coef", -1.0);
-      part.tendons.push_back(std::move(t));
+      const bool m0 = moving[e[0]], m1 = moving[e[1]];
+      spring(fmt::format("bend_{}_{}", e[0], e[1]), SkinNames::PinJoint(e[0]), m0, SkinNames::PinJoint(e[1]), m1,
+             mech.k_bend_N_m);
+      if (!membrane) continue;
+      for (char axis : {'y', 'z'}) {
+        spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), SkinNames::PinShearJoint(e[0], axis), m0,
+               SkinNames::PinShearJoint(e[1], axis), m1, mech.k_couple_N_m);
+      }
     }
   }
   return part;

@@ -26,7 +26,13 @@ struct SkinConfig {
   double damping_ratio = 0.7;       ///< damping ratio of each pin's normal mode
   double shear_damping_ratio = 4.0; ///< damping ratio of the skin's in-plane (shear) mode
   double contact_radius_mm = 1.5;   ///< radius of the spherical contact patch at each pin
-  std::string coupling = "shell";   ///< how pins are coupled through the skin: shell or none
+  std::string coupling = "shell";   ///< how pins are coupled through the skin: shell, membrane or none
+  std::string pattern = "smooth";   ///< smooth, fingerprint-v1, fingerprint-v2
+  double ridge_spacing_mm = 3.0;    ///< fingerprint: radial step between ridge rings (arc length)
+  double ridge_height_mm = 2.0;     ///< fingerprint: ridge height above the skin (v2: peak-to-trough)
+  std::string ridge_shape = "sine"; ///< fingerprint: square (raised rings) or sine (continuous wave)
+  int pins_per_ring = 6;            ///< fingerprint: ring k carries pins_per_ring * k pins
+  double pattern_radius_mm = 20.0;  ///< fingerprint: arc radius of the outermost ring allowed
 
   template <class V>
   void Visit(V& v) {
@@ -68,11 +74,43 @@ struct SkinConfig {
       "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",
       Bounds::Closed(0.1, 10.0));
     v("coupling", coupling, "",
-      "shell: the membrane couples the pins (one in-plane shell on the gel, bending springs between "
-      "neighbours). none: every pin on its own gel column with its own normal and two shear springs and no "
-      "coupling - the brush model, used to validate the contact mechanics.",
-      Choices{"shell", "none"});
+      "shell: the membrane is rigid in-plane (one shell on the gel carries all pins tangentially; bending "
+      "springs couple neighbours' normal motion) - the smooth TacTip. membrane: every pin has its own two shear "
+      "DOFs, coupled to its neighbours by membrane springs (E t) in series with the ridges' rocking compliance - "
+      "the fingerprint skins, which show partial slip. none: every pin on its own gel column, no coupling - the "
+      "brush model, used to validate the contact mechanics.",
+      Choices{"shell", "membrane", "none"});
+    v("pattern", pattern, "",
+      "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "
+      "ridge rings with the pins extending into them (they pivot: the inner marker and the outer contact point "
+      "move differently). fingerprint-v2: a continuous circular wave with the pins running through the skin at "
+      "its peaks (inner and outer markers move together). Fingerprint pins sit on rings ridge_spacing_mm apart. "
+      "'--skin NAME' on the command line applies the documented preset of the variant.",
+      Choices{"smooth", "fingerprint-v1", "fingerprint-v2"});
+    v("ridge_spacing_mm", ridge_spacing_mm, "mm",
+      "Fingerprint: radial step between ridge rings along the dome (v1: 4 mm, v2: 3 mm). Sets the pin count, "
+      "each pin's gel cell, and the ridge base width (half the spacing).",
+      Bounds::Closed(1.0, 10.0));
+    v("ridge_height_mm", ridge_height_mm, "mm",
+      "Fingerprint: height of the ridges above the skin (v1: 2 mm; v2: 2 mm peak-to-trough). Raises the contact "
+      "surface and sets the lever of the ridges' rocking compliance (k_rock = k_theta / lever^2).",
+      Bounds::Closed(0.1, 10.0));
+    v("ridge_shape", ridge_shape, "",
+      "Fingerprint: square ridges (v1) rock about their root, lever = ridge height; a sine wave (v2) rocks about "
+      "its mid-height, lever = half the height.",
+      Choices{"square", "sine"});
+    v("pins_per_ring", pins_per_ring, "", "Fingerprint: ring k (k >= 1) carries pins_per_ring * k pins.",
+      Bounds::Closed(1, 24));
+    v("pattern_radius_mm", pattern_radius_mm, "mm",
+      "Fingerprint: arc radius of the outermost ring; rings sit at k * ridge_spacing_mm <= this.",
+      Bounds::Closed(1.0, 60.0));
   }
+  /// Radius of the contact surface: the dome plus the ridges of a fingerprint pattern.
+  double OuterRadiusMm() const;
+  /// Radius of each pin's spherical contact patch (fingerprint: at most half the ring step).
+  double ContactRadiusMm() const;
+  /// True for the fingerprint patterns.
+  bool Fingerprint() const { return pattern != "smooth"; }
   /// Cross-field rules (the lattice must fit on the hemisphere).
   void ValidateRules() const;
 };
@@ -141,12 +179,32 @@ struct SkinMechanics {
   double pin_damping_Ns_m = 0.0;    ///< normal-mode damping per pin
   double shell_damping_Ns_m = 0.0;  ///< damping of the skin's in-plane translation
   double membrane_N_m = 0.0;        ///< in-plane membrane stiffness E t (reported, see README)
+  // Per-pin shear DOFs (coupling membrane or none):
+  double k_rock_N_m = 0.0;          ///< ridge rocking stiffness at the contact point (0: no ridges)
+  double k_tip_N_m = 0.0;           ///< contact point to base in shear: gel in series with the ridge
+  double k_link_N_m = 0.0;          ///< membrane spring between neighbouring pins, (sqrt 3 / 2) E t
+  double k_couple_N_m = 0.0;        ///< neighbour coupling of the contact points: link in series with two ridges
+  double tip_damping_Ns_m = 0.0;    ///< shear damping per pin DOF
+  double marker_rock_factor = 0.0;  ///< inner marker = contact point - this * ridge deflection
+  int max_degree = 6;               ///< most neighbours of any pin
 
   static SkinMechanics From(const SkinConfig& skin, size_t n_pins);
+  /// With the lattice: the neighbour count enters the stiffest shear mode.
+  static SkinMechanics From(const SkinConfig& skin, const struct PinLattice& lattice);
   /// Highest natural frequency of the pin lattice (rad/s): normal mode with every
   /// neighbour in antiphase, omega = sqrt((k_n + 12 k_b) / m).
   double StiffestOmega() const;
+  /// Highest shear-mode frequency of a membrane lattice (Gershgorin bound), rad/s.
+  double StiffestShearOmega() const;
+  /// Shear damping per pin DOF of a membrane/uncoupled lattice at this timestep: the
+  /// physical value (shear_damping_ratio on k_tip), raised where the stiffest shear mode
+  /// would otherwise be unstable (tendon springs are integrated explicitly).
+  double TipDamping(double timestep_s) const;
 };
+
+/// The `--skin NAME` presets: "skin.key=value" overrides for smooth, fingerprint-v1 and
+/// fingerprint-v2 (throws InputError for another name).
+std::vector<std::string> SkinPreset(const std::string& name);
 
 /// Names used in the MJCF so scenarios can look the parts up.
 struct SkinNames {
@@ -168,10 +226,13 @@ struct SkinPart {
   int n_collidable = 0;
 };
 
-/// Builds the smooth TacTip part (skin.coupling chooses the shell or the uncoupled lattice). `collidable[i]` says whether pin i gets a contact
-/// geom (pins that cannot touch the stimulus get none). Contact bits: pins have
+/// Builds the skin part (skin.coupling chooses the shell, membrane or uncoupled lattice). `collidable[i]` says whether pin i gets a contact
+/// geom (pins that cannot touch the stimulus get none; in a membrane lattice they also get
+/// no DOFs: the skin beyond the contact anchors its neighbours). Contact bits: pins have
 /// contype 0 / conaffinity 2, so they touch only geoms with contype 2.
-SkinPart BuildSmoothSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
-                         const std::vector<bool>& collidable);
+/// `timestep_s` sets the floor of the membrane lattice's shear damping (its stiffest
+/// shear mode must stay stable under explicit integration of the tendon springs).
+SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
+                   const std::vector<bool>& collidable, double timestep_s);
 
 }  // namespace tactip

@@ -84,6 +84,10 @@ void RailScenarioConfig::ValidateRules() const {
              fmt::format("the retraction would take {:.0f} s of simulated time (limit {:.0f} s); use >= {:.3g}",
                          retract_mm / rail.retract_speed_mm_s, kMaxRetractS, retract_mm / kMaxRetractS));
   }
+  if (external.enabled && rail.stimulus != "acrylic") {
+    FailRule("external.enabled", 1.0,
+             "the external camera sees the skin only through a transparent stimulus: set rail.stimulus = acrylic");
+  }
   const double frame_dt = 1.0 / sensor.frame_rate_hz;
   if (frame_dt < sim.timestep_s) {
     FailRule("sensor.frame_rate_hz", sensor.frame_rate_hz,
@@ -121,6 +125,8 @@ struct RailScenario::Impl {
   int slide_dof = -1, arm_z_dof = -1;
   std::vector<int> pin_site, pin_outer_site, pin_geom;  // pin_geom -1: no contact geom
   std::vector<int> slot_of_geom;                         // geom id -> pin index
+  double marker_rock_m_N = 0.0;  // inner marker moves by -this * tangential contact force (ridge pivot)
+  double apex_x_m = 0.0;         // dome apex in the sensor frame
 };
 
 RailScenario::RailScenario(const RailScenarioConfig& cfg) : impl_(std::make_unique<Impl>()), cfg_(cfg) {
@@ -137,6 +143,11 @@ RailScenario::RailScenario(const RailScenarioConfig& cfg) : impl_(std::make_uniq
   impl_->slide_dof = m.JointDofAdr(m.JointId(RailNames::kSlide));
   impl_->arm_z_dof = m.JointDofAdr(m.JointId(RailNames::kArmZ));
   impl_->slot_of_geom.assign(m.ngeom(), -1);
+  const SkinMechanics mech = SkinMechanics::From(cfg_.skin, PinLattice::Build(cfg_.skin));
+  if (cfg_.skin.coupling == "membrane" && mech.k_rock_N_m > 0.0) {
+    impl_->marker_rock_m_N = mech.marker_rock_factor / mech.k_rock_N_m;
+  }
+  impl_->apex_x_m = cfg_.skin.OuterRadiusMm() * 1e-3;
   for (int i = 0; i < impl_->scene.n_pins; ++i) {
     impl_->pin_site.push_back(m.SiteId(SkinNames::PinSite(i)));
     impl_->pin_outer_site.push_back(m.SiteId(SkinNames::PinOuterSite(i)));
@@ -170,6 +181,10 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   const double depth_m = (c.rail.press_depth_mm + vary.Uniform(-1.0, 1.0) * c.rail.press_depth_jitter_mm) * 1e-3;
   const double mu = c.contact.friction * (1.0 + vary.Uniform(-1.0, 1.0) * c.contact.friction_jitter);
   DetectionNoise noise(c.sensor, DeriveSeed(run_seed, 1));
+  CameraConfig ext_noise_cfg;
+  ext_noise_cfg.pixel_noise_px = c.external.pixel_noise_px;
+  ext_noise_cfg.dropout_prob = 0.0;
+  DetectionNoise ext_noise(ext_noise_cfg, DeriveSeed(run_seed, 2));
 
   // This run's model: the shared one with this run's friction.
   CompiledModel model = im.model->Copy();
@@ -188,6 +203,7 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   const double dt = c.sim.timestep_s;
   const double weight_N = c.object.mass_kg * model.gravity();
   PinholeCamera camera(c.sensor);
+  const ExternalCamera ext_camera(c.external, im.apex_x_m);
 
   // Output arrays, grown frame by frame.
   rec = RunRecord{};
@@ -199,7 +215,9 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   std::vector<GeomContact> contacts(N);
   std::vector<std::array<double, 3>> tangential(N);
   std::vector<PinContactSample> samples(N);
-  std::vector<float> px(2 * N), prev_px;
+  std::vector<float> px(2 * N), prev_px, ext_px(2 * N), prev_ext_px;
+  std::vector<std::uint8_t> ext_valid(N);
+  std::vector<std::uint8_t> slid_before_gross(N, 0), contact_at_retract;
   std::vector<std::uint8_t> valid(N), pin_contact(N), pin_slip(N);
 
   RailRunSummary sum;
@@ -210,6 +228,9 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   sum.object_fall_s = kNaN;
   sum.predicted_onset_s = kNaN;
   sum.coulomb_early_s = kNaN;
+  sum.incipient_onset_s = kNaN;
+  sum.incipient_lead_s = kNaN;
+  sum.pre_slip_fraction = kNaN;
   double end_time = sched.give_up;
   double prev_margin = kNaN, prev_skin = kNaN, prev_t = 0.0;
   double rel_ref = kNaN, creep_ref = kNaN, creep_max = 0.0;
@@ -289,11 +310,18 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
     next_frame_step = FrameStep(frame, c.sensor.frame_rate_hz, dt);
     rec.time.push_back(tf);
 
-    // Pin inner ends in the sensor frame, and their image positions.
+    // Pin inner ends in the sensor frame, and their image positions. A fingerprint
+    // ridge rocks under its tangential contact force (quasi-statically, deflection
+    // f_t / k_rock at the contact point), which moves the inner marker the other way.
     const auto origin = sim.BodyPos(im.sensor_body);
     const auto rot = sim.BodyRot(im.sensor_body);
     for (int i = 0; i < N; ++i) {
-      const auto p = ToSensorFrame(sim.SitePos(im.pin_site[i]), origin, rot);
+      auto p = ToSensorFrame(sim.SitePos(im.pin_site[i]), origin, rot);
+      if (im.marker_rock_m_N > 0.0) {
+        const auto& f = tangential[i];
+        const auto fs = ToSensorFrame({origin[0] + f[0], origin[1] + f[1], origin[2] + f[2]}, origin, rot);
+        for (int k = 0; k < 3; ++k) p[k] -= im.marker_rock_m_N * fs[k];
+      }
       for (int k = 0; k < 3; ++k) rec.pos_m.push_back(static_cast<float>(p[k]));
       const auto uv = camera.Project(p);
       px[2 * i] = static_cast<float>(uv[0]);
@@ -303,6 +331,19 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
     prev_px = px;
     rec.pos_px.insert(rec.pos_px.end(), px.begin(), px.end());
     rec.valid.insert(rec.valid.end(), valid.begin(), valid.end());
+    if (c.external.enabled) {
+      // External markers: the outer contact points, seen through the plate.
+      for (int i = 0; i < N; ++i) {
+        const auto q = ToSensorFrame(sim.SitePos(im.pin_outer_site[i]), origin, rot);
+        for (int k = 0; k < 3; ++k) rec.external_m.push_back(static_cast<float>(q[k]));
+        const auto uv = ext_camera.Project(q);
+        ext_px[2 * i] = static_cast<float>(uv[0]);
+        ext_px[2 * i + 1] = static_cast<float>(uv[1]);
+      }
+      ext_noise.Apply(ext_px, ext_valid, prev_ext_px);
+      prev_ext_px = ext_px;
+      rec.external_px.insert(rec.external_px.end(), ext_px.begin(), ext_px.end());
+    }
 
     // Contact forces (tangential in sensor y, z) and stick/slip labels.
     for (int i = 0; i < N; ++i) {
@@ -315,6 +356,14 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
     rec.pin_contact.insert(rec.pin_contact.end(), pin_contact.begin(), pin_contact.end());
     rec.pin_slip.insert(rec.pin_slip.end(), pin_slip.begin(), pin_slip.end());
     rec.gross_slip.push_back(gross);
+    const std::uint8_t partial = fl.n_slip > 0 && fl.n_slip < fl.n_contact ? 1 : 0;
+    rec.incipient.push_back(partial);
+    // Incipient slip: partial slip from the retraction on, before gross slip.
+    if (t >= sched.retract_start && std::isnan(sum.gross_slip_onset_s)) {
+      if (contact_at_retract.empty()) contact_at_retract = pin_contact;
+      for (int i = 0; i < N; ++i) slid_before_gross[i] |= contact_at_retract[i] & pin_slip[i];
+      if (partial && std::isnan(sum.incipient_onset_s)) sum.incipient_onset_s = t;
+    }
     const double obj_z = sim.BodyPos(im.slider_body)[2];
     rec.object_height_m.push_back(obj_z - RailLayout::kAxisHeight);
 
@@ -338,6 +387,17 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
 
   // Run attributes.
   sum.creep_um = creep_max * 1e6;
+  if (!std::isnan(sum.incipient_onset_s) && !std::isnan(sum.gross_slip_onset_s)) {
+    sum.incipient_lead_s = sum.gross_slip_onset_s - sum.incipient_onset_s;
+  }
+  if (!contact_at_retract.empty()) {
+    int n_c = 0, n_s = 0;
+    for (int i = 0; i < N; ++i) {
+      n_c += contact_at_retract[i];
+      n_s += slid_before_gross[i];
+    }
+    if (n_c > 0) sum.pre_slip_fraction = static_cast<double>(n_s) / n_c;
+  }
   sum.held = std::isnan(sum.gross_slip_onset_s) || sum.gross_slip_onset_s >= sched.retract_start;
   sum.mujoco_warnings = sim.WarningCount();
   sum.sim_time_s = static_cast<double>(sum.steps) * dt;
@@ -355,7 +415,11 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   rec.attrs["creep_um"] = sum.creep_um;
   rec.attrs["rail_friction_N"] = c.rail.friction_N;
   rec.attrs["object_held"] = sum.held ? 1.0 : 0.0;
+  rec.attrs["incipient_onset_s"] = sum.incipient_onset_s;
+  rec.attrs["incipient_lead_s"] = sum.incipient_lead_s;
+  rec.attrs["pre_slip_fraction"] = sum.pre_slip_fraction;
   rec.text_attrs["stimulus"] = c.rail.stimulus;
+  rec.text_attrs["skin_pattern"] = c.skin.pattern;
   rec.CheckShapes();
   return sum;
 }

@@ -24,6 +24,7 @@ struct RailScenarioConfig {
   SkinConfig skin;
   ArmConfig arm;
   CameraConfig sensor;
+  ExternalCameraConfig external;
   LabelConfig labels;
 
   template <class V>
@@ -35,6 +36,7 @@ struct RailScenarioConfig {
     v.Section("skin", skin);
     v.Section("arm", arm);
     v.Section("sensor", sensor);
+    v.Section("external", external);
     v.Section("labels", labels);
   }
   /// Cross-field rules, including the timestep stability limit of the built model.
@@ -46,6 +48,9 @@ struct RailScenarioConfig {
 /// Run-level results beyond the arrays, also stored as run attributes.
 struct RailRunSummary {
   double gross_slip_onset_s = 0.0;   ///< first gross-slip frame after the lift (NaN: none)
+  double incipient_onset_s = 0.0;    ///< first partial-slip frame after retraction starts, before gross slip (NaN: none)
+  double incipient_lead_s = 0.0;     ///< gross_slip_onset_s - incipient_onset_s (NaN: either missing)
+  double pre_slip_fraction = 0.0;    ///< pins in contact at retraction start that slid before gross slip
   double object_fall_s = 0.0;        ///< object dropped fall_threshold_mm (NaN: never)
   double predicted_onset_s = 0.0;    ///< Coulomb: mu*sum(N) + rail friction falls below m g
   double coulomb_early_s = 0.0;      ///< mu*sum(N) - rail friction falls below m g (earliest skin slip)

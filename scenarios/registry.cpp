@@ -10,7 +10,22 @@ RailScenarioConfig LoadRail(const ConfigSource& src) {
   return LoadConfig<RailScenarioConfig>(src.yaml_path, src.overrides);
 }
 
+RailScenarioConfig LoadIncipient(const ConfigSource& src) {
+  return LoadConfig<RailScenarioConfig>(src.yaml_path, src.overrides, IncipientDefaults());
+}
+
 }  // namespace
+
+RailScenarioConfig IncipientDefaults() {
+  RailScenarioConfig cfg;
+  std::vector<std::string> keys = {"rail.stimulus=acrylic", "external.enabled=true", "rail.retract_speed_mm_s=0.3"};
+  for (const auto& k : SkinPreset("fingerprint-v2")) keys.push_back(k);
+  for (const auto& k : keys) {
+    auto [key, value] = ParseAssignment(k);
+    ApplyFlat(cfg, FlatConfig{{key, value}});
+  }
+  return cfg;
+}
 
 const std::vector<ScenarioEntry>& Scenarios() {
   static const std::vector<ScenarioEntry> entries = {
@@ -19,6 +34,12 @@ const std::vector<ScenarioEntry>& Scenarios() {
        [](const ConfigSource& s) { return DescribeConfig(LoadRail(s)); },
        [](const ConfigSource& s) { return BuildRailScene(LoadRail(s).SceneSpec()).xml; },
        [](const ConfigSource& s, const GenerateOptions& o) { return GenerateRailDataset(LoadRail(s), o); }},
+      {"incipient",
+       "transparent-acrylic rig: the rail protocol on a clear 10 mm acrylic plate with an external camera; "
+       "fingerprint-v2 skin by default (--skin smooth|fingerprint-v1|fingerprint-v2), retraction 0.3 mm/s",
+       [](const ConfigSource& s) { return DescribeConfig(LoadIncipient(s)); },
+       [](const ConfigSource& s) { return BuildRailScene(LoadIncipient(s).SceneSpec()).xml; },
+       [](const ConfigSource& s, const GenerateOptions& o) { return GenerateRailDataset(LoadIncipient(s), o); }},
   };
   return entries;
 }

@@ -30,6 +30,10 @@ struct ScenarioEntry {
   std::function<GenerateResult(const ConfigSource&, const GenerateOptions&)> generate;
 };
 
+/// Defaults of the `incipient` scenario: the rail config on clear acrylic with the
+/// external camera, retraction 0.3 mm/s, fingerprint-v2 skin.
+RailScenarioConfig IncipientDefaults();
+
 /// All registered scenarios, in listing order.
 const std::vector<ScenarioEntry>& Scenarios();
 /// The scenario named `name`; throws InputError listing the known names.

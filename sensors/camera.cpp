@@ -10,6 +10,11 @@ std::array<double, 2> PinholeCamera::Project(const std::array<double, 3>& p) con
   return {cfg_.cx_px + cfg_.fx_px * p[1] / depth, cfg_.cy_px - cfg_.fy_px * p[2] / depth};
 }
 
+std::array<double, 2> ExternalCamera::Project(const std::array<double, 3>& p) const {
+  const double depth = cam_x_ - p[0];
+  return {cfg_.cx_px - cfg_.f_px * p[1] / depth, cfg_.cy_px - cfg_.f_px * p[2] / depth};
+}
+
 long long FrameStep(long long k, double rate_hz, double timestep_s) {
   return std::llround(static_cast<double>(k) / (rate_hz * timestep_s));
 }

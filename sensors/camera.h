@@ -64,6 +64,48 @@ class PinholeCamera {
   CameraConfig cfg_;
 };
 
+/// The external camera of the transparent rig (the `external.` section): it looks at the
+/// outside of the skin through the clear plate, on the sensor axis in front of the apex,
+/// facing the sensor. It moves with the sensor (fixed to the arm's mount) and shares the
+/// internal camera's frame times.
+struct ExternalCameraConfig {
+  bool enabled = false;            ///< record external markers (transparent stimulus only)
+  double distance_mm = 60.0;       ///< optical centre in front of the dome apex, along the axis
+  double f_px = 580.0;             ///< focal length in pixels
+  double cx_px = 320.0;            ///< principal point, horizontal
+  double cy_px = 240.0;            ///< principal point, vertical
+  double pixel_noise_px = 0.28;    ///< std of Gaussian noise per pixel coordinate
+
+  template <class V>
+  void Visit(V& v) {
+    v("enabled", enabled, "",
+      "Record the outer contact points (external markers) in a second camera, as external/pos_px. Needs a "
+      "transparent stimulus (rail.stimulus = acrylic).");
+    v("distance_mm", distance_mm, "mm",
+      "Distance of the external camera's optical centre in front of the dome apex, on the sensor axis, looking "
+      "back at the skin (its image is mirrored relative to the internal camera's).",
+      Bounds::Closed(5.0, 1000.0));
+    v("f_px", f_px, "px", "Focal length of the external camera in pixels.", Bounds::Positive());
+    v("cx_px", cx_px, "px", "Principal point, horizontal.", Bounds::Any());
+    v("cy_px", cy_px, "px", "Principal point, vertical.", Bounds::Any());
+    v("pixel_noise_px", pixel_noise_px, "px", "Std of Gaussian noise per pixel coordinate of an external marker.",
+      Bounds::Closed(0.0, 20.0));
+  }
+  void ValidateRules() const {}
+};
+
+/// Pinhole projection of the external camera: at sensor x = apex + distance, looking
+/// along -x. Image u grows with sensor -y (the mirror of the internal view), v with -z.
+class ExternalCamera {
+ public:
+  ExternalCamera(const ExternalCameraConfig& cfg, double apex_x_m) : cfg_(cfg), cam_x_(apex_x_m + cfg.distance_mm * 1e-3) {}
+  std::array<double, 2> Project(const std::array<double, 3>& p_sensor_m) const;
+
+ private:
+  ExternalCameraConfig cfg_;
+  double cam_x_;
+};
+
 /// Frame `k` of a camera at `rate_hz` is taken at the physics step nearest to k / rate.
 long long FrameStep(long long k, double rate_hz, double timestep_s);
 

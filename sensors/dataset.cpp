@@ -318,6 +318,26 @@ void RunRecord::CheckShapes() const {
   check("normal_N", normal_N.size(), t * n, "T*N");
   check("tangential_N", tangential_N.size(), t * n * 2, "T*N*2");
   check("object_height_m", object_height_m.size(), t, "T");
+  check("incipient", incipient.size(), t, "T");
+  if (!external_px.empty() || !external_m.empty()) {
+    check("external_px", external_px.size(), t * n * 2, "T*N*2");
+    check("external_m", external_m.size(), t * n * 3, "T*N*3");
+  }
+}
+
+std::vector<std::uint8_t> PartialSlipLabels(const std::vector<std::uint8_t>& pin_contact,
+                                            const std::vector<std::uint8_t>& pin_slip, int n_pins) {
+  const size_t n = static_cast<size_t>(n_pins);
+  std::vector<std::uint8_t> out(n == 0 ? 0 : pin_contact.size() / n, 0);
+  for (size_t f = 0; f < out.size(); ++f) {
+    int contact = 0, slip = 0;
+    for (size_t i = 0; i < n; ++i) {
+      contact += pin_contact[f * n + i];
+      slip += pin_contact[f * n + i] && pin_slip[f * n + i];
+    }
+    out[f] = slip > 0 && slip < contact ? 1 : 0;
+  }
+  return out;
 }
 
 std::string RunGroupName(int index) {
@@ -432,6 +452,12 @@ void DatasetWriter::WriteRun(const RunRecord& run) {
       WriteArray(labels.get(), "gross_slip", {t}, run.gross_slip, "1", where + "/labels", im.err);
       WriteArray(labels.get(), "pin_slip", {t, n}, run.pin_slip, "1", where + "/labels", im.err);
       WriteArray(labels.get(), "pin_contact", {t, n}, run.pin_contact, "1", where + "/labels", im.err);
+      WriteArray(labels.get(), "incipient", {t}, run.incipient, "1", where + "/labels", im.err);
+    }
+    if (!run.external_px.empty()) {
+      const Hid ext = CreateGroup(g, "external", where + "/external", im.err);
+      WriteArray(ext.get(), "pos_px", {t, n, 2}, run.external_px, "px", where + "/external", im.err);
+      WriteArray(ext.get(), "pos_m", {t, n, 3}, run.external_m, "m", where + "/external", im.err);
     }
     {
       const Hid contact = CreateGroup(g, "contact", where + "/contact", im.err);
@@ -538,6 +564,16 @@ struct DatasetReader::Impl {
   }
 
   /// Opens array `rel` (e.g. "pins/pos_px") of run group `group`.
+  /// True if the run has the (optional) array `rel`.
+  static bool HasArray(hid_t group, const std::string& rel) {
+    size_t slash = 0;
+    // Every link on the path must exist (H5Lexists fails on a missing parent).
+    while ((slash = rel.find('/', slash + 1)) != std::string::npos) {
+      if (H5Lexists(group, rel.substr(0, slash).c_str(), H5P_DEFAULT) <= 0) return false;
+    }
+    return H5Lexists(group, rel.c_str(), H5P_DEFAULT) > 0;
+  }
+
   Hid OpenArray(hid_t group, const std::string& run, const char* rel) const {
     const hid_t id = H5Dopen2(group, rel, H5P_DEFAULT);
     if (id < 0) throw InputError(Name() + ": " + run + " has no array " + rel);
@@ -690,6 +726,17 @@ RunRecord DatasetReader::ReadRun(int index) const {
   run.normal_N = im.ReadArray<float>(g, name, "contact/normal_N", {t, n});
   run.tangential_N = im.ReadArray<float>(g, name, "contact/tangential_N", {t, n, 2});
   run.object_height_m = im.ReadArray<double>(g, name, "object/height_m", {t});
+  // Optional arrays: partial-slip labels (absent in files from before they existed; then
+  // derived from the per-pin labels) and the external camera (transparent rigs only).
+  if (Impl::HasArray(g, "labels/incipient")) {
+    run.incipient = im.ReadArray<std::uint8_t>(g, name, "labels/incipient", {t});
+  } else {
+    run.incipient = PartialSlipLabels(run.pin_contact, run.pin_slip, run.n_pins);
+  }
+  if (Impl::HasArray(g, "external/pos_px")) {
+    run.external_px = im.ReadArray<float>(g, name, "external/pos_px", {t, n, 2});
+    run.external_m = im.ReadArray<float>(g, name, "external/pos_m", {t, n, 3});
+  }
   return run;
 }
 

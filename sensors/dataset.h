@@ -29,6 +29,9 @@ struct RunRecord {
   std::vector<std::uint8_t> gross_slip; ///< (T) 1 while the object slips on the sensor
   std::vector<std::uint8_t> pin_slip;   ///< (T,N) 1 = this pin's contact is sliding
   std::vector<std::uint8_t> pin_contact;///< (T,N) 1 = this pin touches the stimulus
+  std::vector<std::uint8_t> incipient;  ///< (T) 1 = partial slip: some contacting pins slide, others stick
+  std::vector<float> external_px;       ///< (T,N,2) outer contact points in the external camera, or empty
+  std::vector<float> external_m;        ///< (T,N,3) true outer contact points, sensor frame, m, or empty
   std::vector<float> normal_N;          ///< (T,N) normal force at each pin, N
   std::vector<float> tangential_N;      ///< (T,N,2) tangential force (sensor y, z), N
   std::vector<double> object_height_m;  ///< (T) object position along the rail, m
@@ -95,6 +98,11 @@ class DatasetReader {
   DatasetHeader header_;
   std::vector<int> runs_;
 };
+
+/// Partial-slip label per frame from (T,N) per-pin labels: 1 when at least one contacting
+/// pin slides while at least one other sticks.
+std::vector<std::uint8_t> PartialSlipLabels(const std::vector<std::uint8_t>& pin_contact,
+                                            const std::vector<std::uint8_t>& pin_slip, int n_pins);
 
 /// Group name of a run: "run_0007".
 std::string RunGroupName(int index);

@@ -232,6 +232,49 @@ std::string FieldsToYaml(const std::vector<FieldDoc>& fields) {
   return std::string(out.c_str()) + "\n";
 }
 
+std::string FieldsToCommentedYaml(const std::vector<FieldDoc>& fields, const std::string& header) {
+  std::string out = header;
+  std::string section;
+  auto comment = [&](const std::string& text) {
+    // Word-wrapped "  # ..." lines of at most ~100 characters.
+    std::string line;
+    size_t pos = 0;
+    while (pos < text.size()) {
+      size_t sp = text.find(' ', pos);
+      if (sp == std::string::npos) sp = text.size();
+      const std::string word = text.substr(pos, sp - pos);
+      if (!line.empty() && line.size() + 1 + word.size() > 96) {
+        out += "  # " + line + "\n";
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + word;
+      pos = sp + 1;
+    }
+    if (!line.empty()) out += "  # " + line + "\n";
+  };
+  for (const auto& f : fields) {
+    const auto dot = f.key.rfind('.');
+    const std::string sec = dot == std::string::npos ? "" : f.key.substr(0, dot);
+    const std::string leaf = dot == std::string::npos ? f.key : f.key.substr(dot + 1);
+    if (sec != section) {
+      out += (section.empty() ? "\n" : "\n") + sec + ":\n";
+      section = sec;
+    }
+    comment(f.doc + (f.unit.empty() ? "" : " [" + f.unit + "]"));
+    std::string value = f.value;
+    if (f.type == "string") {
+      std::string q = "\"";
+      for (char ch : value) {
+        if (ch == '"' || ch == '\\') q += '\\';
+        q += ch;
+      }
+      value = q + "\"";
+    }
+    out += "  " + leaf + ": " + value + "\n";
+  }
+  return out;
+}
+
 void FailRule(const std::string& key, double value, const std::string& rule) {
   throw InputError(key + " = " + config_detail::FormatReal(value) + ": " + rule);
 }

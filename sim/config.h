@@ -183,6 +183,10 @@ std::vector<FieldDoc> DescribeConfig(Config cfg) {
 /// Writes the fully resolved config as nested YAML (every field, current values).
 std::string FieldsToYaml(const std::vector<FieldDoc>& fields);
 
+/// The same with each field's documentation and unit as comments above it, after a
+/// `header` (comment lines); for config files meant to be read and edited.
+std::string FieldsToCommentedYaml(const std::vector<FieldDoc>& fields, const std::string& header);
+
 /// The resolved config as YAML text, as stored in datasets.
 template <class Config>
 std::string ConfigToYaml(const Config& cfg) {

@@ -13,6 +13,7 @@
 
 #include "detectors/detector.h"
 #include "scenarios/cli/detect_commands.h"
+#include "scenarios/incipient_report.h"
 #include "scenarios/registry.h"
 #include "scenarios/validate.h"
 #include "sensors/dataset.h"
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
   std::string scenario_name, config_path, out_path;
   std::vector<std::string> sets;
   double speed = std::nan("");
-  std::string stimulus;
+  std::string stimulus, skin_name;
   auto add_config_opts = [&](CLI::App* c) {
     c->add_option("scenario", scenario_name, "Scenario name (see 'tactip scenarios').")->required();
     c->add_option("--config", config_path,
@@ -101,7 +102,10 @@ int main(int argc, char** argv) {
         ->type_name("KEY=VALUE");
     c->add_option("--speed-mm-s", speed, "Shortcut for --set rail.retract_speed_mm_s=V.");
     c->add_option("--stimulus", stimulus,
-                  "Shortcut for --set rail.stimulus=S (flat, curved80, curved40, curved20).");
+                  "Shortcut for --set rail.stimulus=S (flat, acrylic, curved80, curved40, curved20).");
+    c->add_option("--skin", skin_name,
+                  "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling and the "
+                  "variant's ridge/thickness/pin keys; applied before --set).");
   };
 
   // tactip generate
@@ -134,6 +138,8 @@ int main(int argc, char** argv) {
   auto* cmd_config = app.add_subcommand("config", "List every config key of a scenario with unit, range and meaning.");
   add_config_opts(cmd_config);
   cmd_config->add_flag("--yaml", as_yaml, "Print the resolved config as YAML instead of the table.");
+  bool with_comments = false;
+  cmd_config->add_flag("--comments", with_comments, "With --yaml: each key's meaning and unit as a comment above it.");
 
   // tactip validate contact
   std::string validate_what;
@@ -144,6 +150,23 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"contact"}));
   add_config_opts(cmd_validate);
   cmd_validate->get_option("scenario")->required(false);
+
+  // tactip report incipient
+  std::string report_what, report_path, report_csv;
+  tactip::IncipientParams report_params;
+  auto* cmd_report = app.add_subcommand(
+      "report", "Per-run incipient-slip figures of a dataset: ground-truth lead times, first-slipping pins, "
+                "internal vs external tracking, and the incipient detector's alarms.");
+  cmd_report->add_option("what", report_what, "incipient")->required()->check(CLI::IsMember({"incipient"}));
+  cmd_report->add_option("file", report_path, "HDF5 dataset written by 'tactip generate'.")->required();
+  cmd_report->add_option("--window", report_params.window, "Detector moving-average window W (default 5).")
+      ->check(CLI::Range(1, 1000));
+  cmd_report->add_option("--speed-thr-px", report_params.speed_thr_px,
+                         "Detector excess-speed threshold s_thr, px/frame (default 0.2).")
+      ->check(CLI::PositiveNumber);
+  cmd_report->add_option("--count-thr", report_params.count_thr, "Detector set-size threshold I_thr (default 4).")
+      ->check(CLI::Range(1, 100000));
+  cmd_report->add_option("--csv", report_csv, "Also write the per-run table as CSV.");
 
   // tactip train / evaluate / detect / bench
   const auto run_detector_command = tactip::cli::AddDetectorCommands(app, &g_stop);
@@ -177,6 +200,17 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (const int code = run_detector_command(); code >= 0) return code;
+    if (*cmd_report) {
+      if (!report_csv.empty()) tactip::CheckWritableLocation(report_csv);
+      const tactip::DatasetReader reader(report_path);
+      std::vector<tactip::IncipientRunMetrics> metrics;
+      for (int idx : reader.run_indices()) {
+        metrics.push_back(tactip::AnalyzeIncipientRun(reader.ReadRun(idx), report_params));
+      }
+      std::printf("%s", tactip::FormatIncipientReport(metrics, tactip::SummarizeIncipient(metrics)).c_str());
+      if (!report_csv.empty()) tactip::WriteFileAtomic(report_csv, tactip::IncipientCsv(metrics));
+      return 0;
+    }
     if (*cmd_validate) {
       // The skin, contact and solver sections of the rail config apply to the rig.
       const auto rail = tactip::LoadConfig<tactip::RailScenarioConfig>(config_path, sets);
@@ -197,12 +231,22 @@ int main(int argc, char** argv) {
     const tactip::ScenarioEntry& entry = tactip::FindScenario(scenario_name);
     tactip::ConfigSource src;
     src.yaml_path = config_path;
+    if (!skin_name.empty()) src.overrides = tactip::SkinPreset(skin_name);
     if (!std::isnan(speed)) src.overrides.push_back(fmt::format("rail.retract_speed_mm_s={}", speed));
     if (!stimulus.empty()) src.overrides.push_back("rail.stimulus=" + stimulus);
     src.overrides.insert(src.overrides.end(), sets.begin(), sets.end());
 
     if (*cmd_config) {
       const auto fields = entry.describe(src);
+      if (as_yaml && with_comments) {
+        const std::string header = fmt::format(
+            "# {} scenario: every config key with its meaning; values as resolved from the given options.\n"
+            "# Use with: tactip generate {} --config FILE [--set key=value ...]\n"
+            "# 'tactip config {}' prints the same keys with units and allowed ranges.\n",
+            entry.name, entry.name, entry.name);
+        std::printf("%s", tactip::FieldsToCommentedYaml(fields, header).c_str());
+        return 0;
+      }
       if (as_yaml) {
         std::printf("%s", tactip::FieldsToYaml(fields).c_str());
         return 0;
@@ -236,9 +280,11 @@ int main(int argc, char** argv) {
       opts.stop = &g_stop;
       if (!quiet) {
         opts.progress = [](int done, int total, int idx, const tactip::RailRunSummary& s) {
-          std::fprintf(stderr, "[%d/%d] run %d: onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s%s\n",
-                       done, total, idx, Fmt(s.gross_slip_onset_s).c_str(), Fmt(s.object_fall_s).c_str(),
-                       Fmt(s.predicted_onset_s).c_str(), s.sim_time_s, s.wall_time_s,
+          std::fprintf(stderr,
+                       "[%d/%d] run %d: incipient %s s, onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in "
+                       "%.1f s%s\n",
+                       done, total, idx, Fmt(s.incipient_onset_s).c_str(), Fmt(s.gross_slip_onset_s).c_str(),
+                       Fmt(s.object_fall_s).c_str(), Fmt(s.predicted_onset_s).c_str(), s.sim_time_s, s.wall_time_s,
                        s.held ? "" : " (not held: slipped during the lift; press deeper or lighten the object)");
         };
         std::fprintf(stderr, "generating %d %s run(s) into %s\n", runs, entry.name.c_str(), opts.out_path.c_str());

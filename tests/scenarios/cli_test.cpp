@@ -90,11 +90,13 @@ TEST_F(CliTest, BadInputGetsOneLineAndExitCode2) {
       {"generate rail --set rail.nope=1", "unknown config key 'rail.nope'"},
       {"generate rail --set rail.retract_speed_mm_s=-1", "rail.retract_speed_mm_s = -1: must be > 0"},
       {"generate rail --set sensor.pixel_noise_px=abc", "sensor.pixel_noise_px = 'abc': not a number"},
-      {"generate rail --set rail.stimulus=cube", "rail.stimulus = 'cube': must be one of flat, curved80"},
+      {"generate rail --set rail.stimulus=cube", "rail.stimulus = 'cube': must be one of flat, acrylic, curved80"},
       {"generate rail --set novalue", "expected key=value"},
       {"generate rail --config " + P("bad.yaml"), "malformed YAML at line"},
       {"generate rail --config " + P("missing.yaml"), "missing.yaml"},
-      {"generate nosuch", "unknown scenario 'nosuch' (known: rail)"},
+      {"generate nosuch", "unknown scenario 'nosuch' (known: rail, incipient)"},
+      {"generate incipient --skin fingerprint-v3", "--skin 'fingerprint-v3': unknown skin"},
+      {"generate rail --set external.enabled=true", "external.enabled = 1: the external camera sees the skin only"},
       {"generate rail --runs 0", "--runs"},
       {"generate rail --bogus", "bogus"},
       {"generate rail --speed-mm-s 1e-9", "the retraction would take"},
@@ -145,12 +147,21 @@ TEST_F(CliTest, ConfigListsEveryKeyTheIssueNames) {
   }
 }
 
-TEST_F(CliTest, ShippedRailYamlEqualsTheBuiltInDefaults) {
-  const CliResult a = Run("config rail --yaml");
-  const CliResult b = Run(std::string("config rail --yaml --config ") + TACTIP_SOURCE_DIR + "/assets/scenes/rail.yaml");
-  ASSERT_EQ(a.code, 0);
-  ASSERT_EQ(b.code, 0) << b.err;
-  EXPECT_EQ(a.out, b.out);
+TEST_F(CliTest, ShippedSceneYamlsEqualTheBuiltInDefaults) {
+  for (const std::string name : {"rail", "incipient"}) {
+    const CliResult a = Run("config " + name + " --yaml");
+    const CliResult b =
+        Run("config " + name + " --yaml --config " + TACTIP_SOURCE_DIR + "/assets/scenes/" + name + ".yaml");
+    ASSERT_EQ(a.code, 0) << name;
+    ASSERT_EQ(b.code, 0) << name << b.err;
+    EXPECT_EQ(a.out, b.out) << name;
+    // The shipped file is the commented dump of the defaults, so it documents every key.
+    const CliResult c = Run("config " + name + " --yaml --comments");
+    ASSERT_EQ(c.code, 0) << name;
+    std::ifstream f(std::string(TACTIP_SOURCE_DIR) + "/assets/scenes/" + name + ".yaml");
+    const std::string shipped((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(c.out, shipped) << name << ": regenerate with 'tactip config " << name << " --yaml --comments'";
+  }
 }
 
 }  // namespace

@@ -67,6 +67,7 @@ RunRecord MakeRun(int index, int t, int n) {
   for (int i = 0; i < t; ++i) {
     r.time.push_back(0.01 * i + index);
     r.gross_slip.push_back(static_cast<std::uint8_t>(i % 2));
+    r.incipient.push_back(static_cast<std::uint8_t>(i % 3 == 1));
     r.object_height_m.push_back(0.1 - 1e-4 * i);
   }
   for (size_t k = 0; k < tn * 2; ++k) r.pos_px.push_back(100.25f + 0.5f * static_cast<float>(k));
@@ -141,6 +142,8 @@ TEST_F(DatasetTest, RoundTripPreservesEveryArrayAndAttribute) {
   EXPECT_EQ(r.gross_slip, a.gross_slip);
   EXPECT_EQ(r.pin_slip, a.pin_slip);
   EXPECT_EQ(r.pin_contact, a.pin_contact);
+  EXPECT_EQ(r.incipient, a.incipient);
+  EXPECT_TRUE(r.external_px.empty());
   EXPECT_EQ(r.normal_N, a.normal_N);
   EXPECT_EQ(r.tangential_N, a.tangential_N);
   EXPECT_EQ(r.object_height_m, a.object_height_m);
