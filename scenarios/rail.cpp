@@ -424,22 +424,11 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   return sum;
 }
 
-GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const GenerateOptions& opts) {
-  if (opts.runs < 1) throw InputError(fmt::format("--runs = {}: must be >= 1", opts.runs));
-  if (opts.out_path.empty()) throw InputError("no output file given (--out)");
-  const RailScenario scenario(cfg);
-  const auto wall0 = std::chrono::steady_clock::now();
-
-  DatasetHeader header;
-  header.tactip_version = TACTIP_VERSION;
-  header.scenario = opts.scenario;
-  header.seed = opts.seed;
-  header.config_yaml = ConfigToYaml(scenario.config());
-  DatasetWriter writer(opts.out_path, header);
-
-  // Workers take run indices in order; the writer (this thread) writes them in order.
-  const int jobs = std::max(1, std::min(opts.runs, opts.jobs > 0 ? opts.jobs
-                                                                  : static_cast<int>(std::thread::hardware_concurrency())));
+void RunRailRuns(const RailScenario& scenario, int runs, std::uint64_t seed, int jobs_requested,
+                 const std::atomic<bool>* stop, const std::function<void(RunRecord&&, const RailRunSummary&)>& take) {
+  // Workers take run indices in order; this thread hands them to `take` in order.
+  const int jobs = std::max(
+      1, std::min(runs, jobs_requested > 0 ? jobs_requested : static_cast<int>(std::thread::hardware_concurrency())));
   std::mutex mu;
   std::condition_variable cv;
   std::map<int, RunRecord> done;
@@ -452,14 +441,14 @@ GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const Generate
       int idx;
       {
         std::unique_lock lock(mu);
-        // Bound memory: do not run ahead of the writer by more than 2 * jobs runs.
-        cv.wait(lock, [&] { return failure || next_index >= opts.runs || static_cast<int>(done.size()) < 2 * jobs; });
-        if (failure || next_index >= opts.runs) return;
+        // Bound memory: do not run ahead of the consumer by more than 2 * jobs runs.
+        cv.wait(lock, [&] { return failure || next_index >= runs || static_cast<int>(done.size()) < 2 * jobs; });
+        if (failure || next_index >= runs) return;
         idx = next_index++;
       }
       try {
         RunRecord rec;
-        const RailRunSummary s = scenario.Run(idx, opts.seed, rec, &abort);
+        const RailRunSummary s = scenario.Run(idx, seed, rec, &abort);
         std::lock_guard lock(mu);
         done.emplace(idx, std::move(rec));
         summaries.emplace(idx, s);
@@ -474,32 +463,29 @@ GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const Generate
   std::vector<std::thread> threads;
   for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
 
-  GenerateResult result;
-  int written = 0;
+  int taken = 0;
   try {
-    while (written < opts.runs) {
+    while (taken < runs) {
       RunRecord rec;
       RailRunSummary s;
       {
         std::unique_lock lock(mu);
         // Poll, because an interrupting signal cannot notify the condition variable.
-        while (!(failure || done.count(written) > 0 || (opts.stop && opts.stop->load()))) {
+        while (!(failure || done.count(taken) > 0 || (stop && stop->load()))) {
           cv.wait_for(lock, std::chrono::milliseconds(200));
         }
-        if (opts.stop && opts.stop->load()) {
+        if (stop && stop->load()) {
           abort = true;
           if (!failure) failure = std::make_exception_ptr(Interrupted());
         }
         if (failure) break;
-        rec = std::move(done.at(written));
-        done.erase(written);
-        s = summaries.at(written);
+        rec = std::move(done.at(taken));
+        done.erase(taken);
+        s = summaries.at(taken);
       }
       cv.notify_all();
-      writer.WriteRun(rec);
-      result.sim_time_s += s.sim_time_s;
-      ++written;
-      if (opts.progress) opts.progress(written, opts.runs, rec.index, s);
+      take(std::move(rec), s);
+      ++taken;
     }
   } catch (...) {
     std::lock_guard lock(mu);
@@ -509,9 +495,29 @@ GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const Generate
   cv.notify_all();
   for (auto& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
+}
 
+GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const GenerateOptions& opts) {
+  if (opts.runs < 1) throw InputError(fmt::format("--runs = {}: must be >= 1", opts.runs));
+  if (opts.out_path.empty()) throw InputError("no output file given (--out)");
+  const RailScenario scenario(cfg);
+  const auto wall0 = std::chrono::steady_clock::now();
+
+  DatasetHeader header;
+  header.tactip_version = TACTIP_VERSION;
+  header.scenario = opts.scenario;
+  header.seed = opts.seed;
+  header.config_yaml = ConfigToYaml(scenario.config());
+  DatasetWriter writer(opts.out_path, header);
+
+  GenerateResult result;
+  RunRailRuns(scenario, opts.runs, opts.seed, opts.jobs, opts.stop, [&](RunRecord&& rec, const RailRunSummary& s) {
+    writer.WriteRun(rec);
+    result.sim_time_s += s.sim_time_s;
+    ++result.runs;
+    if (opts.progress) opts.progress(result.runs, opts.runs, rec.index, s);
+  });
   writer.Commit();
-  result.runs = written;
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return result;
 }

@@ -117,6 +117,12 @@ struct GenerateResult {
   double wall_time_s = 0.0;
 };
 
+/// Simulates runs 0..runs-1 of `scenario` on `jobs` threads (0 = all cores) and hands each
+/// record to `take` in run order, on the calling thread. Rethrows the first failure;
+/// throws Interrupted when `*stop` becomes true.
+void RunRailRuns(const RailScenario& scenario, int runs, std::uint64_t seed, int jobs, const std::atomic<bool>* stop,
+                 const std::function<void(RunRecord&&, const RailRunSummary&)>& take);
+
 /// Simulates `opts.runs` runs in parallel and writes them, in run order, to an HDF5
 /// file (atomically). Same seed and config give a bit-identical file for any `jobs`.
 GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const GenerateOptions& opts);

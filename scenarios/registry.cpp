@@ -31,12 +31,14 @@ const std::vector<ScenarioEntry>& Scenarios() {
   static const std::vector<ScenarioEntry> entries = {
       {"rail",
        "low-friction rail rig: press the smooth TacTip on a stimulus, lift 50 mm, retract until the object falls",
+       LoadRail,
        [](const ConfigSource& s) { return DescribeConfig(LoadRail(s)); },
        [](const ConfigSource& s) { return BuildRailScene(LoadRail(s).SceneSpec()).xml; },
        [](const ConfigSource& s, const GenerateOptions& o) { return GenerateRailDataset(LoadRail(s), o); }},
       {"incipient",
        "transparent-acrylic rig: the rail protocol on a clear 10 mm acrylic plate with an external camera; "
        "fingerprint-v2 skin by default (--skin smooth|fingerprint-v1|fingerprint-v2), retraction 0.3 mm/s",
+       LoadIncipient,
        [](const ConfigSource& s) { return DescribeConfig(LoadIncipient(s)); },
        [](const ConfigSource& s) { return BuildRailScene(LoadIncipient(s).SceneSpec()).xml; },
        [](const ConfigSource& s, const GenerateOptions& o) { return GenerateRailDataset(LoadIncipient(s), o); }},

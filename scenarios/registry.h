@@ -22,6 +22,8 @@ struct ConfigSource {
 struct ScenarioEntry {
   std::string name;         ///< command-line name
   std::string description;  ///< one line for `tactip scenarios`
+  /// The resolved, validated config (throws InputError).
+  std::function<RailScenarioConfig(const ConfigSource&)> load;
   /// Documentation of every config field (with defaults, or with the source applied).
   std::function<std::vector<FieldDoc>(const ConfigSource&)> describe;
   /// The MJCF of the scene the scenario builds for this config.

@@ -128,6 +128,134 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
   return out;
 }
 
+DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
+  ContactRigSpec spec = opts.rig;
+  if (spec.skin.coupling != "membrane") {
+    throw InputError("dome check: skin.coupling = '" + spec.skin.coupling + "': needs the membrane-coupled lattice");
+  }
+  spec.max_depth_m = opts.depth_mm * 1e-3;
+  const CompiledModel model = CompiledModel::FromXml(BuildContactRig(spec));
+  Simulation sim(model);
+  const PinLattice lattice = PinLattice::Build(spec.skin);
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
+  const int N = static_cast<int>(lattice.size());
+  std::vector<int> slot(model.ngeom(), -1);
+  for (int i = 0; i < N; ++i) {
+    try {
+      slot[model.GeomId(SkinNames::PinGeom(i))] = i;
+    } catch (const ModelError&) {
+      // culled pin: cannot reach the plate
+    }
+  }
+  const int servo_x = model.ActuatorId(ContactRigNames::kServoNormal);
+  const int servo_y = model.ActuatorId(ContactRigNames::kServoShear);
+  const int qy = model.JointQposAdr(model.JointId(ContactRigNames::kShear));
+  const double mu = spec.contact.friction, dt = model.timestep();
+  const double press = spec.gap_m + opts.depth_mm * 1e-3;
+  std::vector<GeomContact> contacts(N);
+  double t = 0.0;
+  auto step = [&](double x_target, double y_target) {
+    sim.SetControl(servo_x, -x_target);
+    sim.SetControl(servo_y, y_target);
+    sim.Step();
+    t += dt;
+  };
+  while (t < 1.3) step(press * Smooth(t / 1.0), 0.0);
+  sim.ReadContacts(slot, contacts);
+  DomeCheck out;
+  double sum_n = 0.0;
+  for (const auto& c : contacts) {
+    if (!c.in_contact) continue;
+    ++out.pins_in_contact;
+    sum_n += c.normal_N;
+  }
+  if (out.pins_in_contact == 0) throw SimulationError("dome check: no pin touches the plate after the press");
+  out.mu_P_N = mu * sum_n;
+
+  // Shear ramp until every contacting pin slides (or well past the Coulomb load).
+  const double v = opts.shear_speed_mm_s * 1e-3;
+  const double u_limit = 4.0 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
+  const double y0 = sim.Qpos(qy), t0 = t;
+  LabelConfig labels;
+  std::vector<PinContactSample> samples(N);
+  std::vector<std::uint8_t> pin_contact(N), pin_slip(N);
+  std::vector<double> first_slip_q(N, std::nan(""));
+  double next_sample = t0 + opts.sample_every_s;
+  out.gross_q_ratio = std::nan("");
+  while (sim.Qpos(qy) - y0 < u_limit) {
+    step(press, v * (t - t0));
+    if (t < next_sample) continue;
+    next_sample += opts.sample_every_s;
+    sim.ReadContacts(slot, contacts);
+    double q = 0.0, p = 0.0;
+    for (int i = 0; i < N; ++i) {
+      const GeomContact& c = contacts[i];
+      const double fn = c.force_world[0] * c.normal_world[0] + c.force_world[1] * c.normal_world[1] +
+                        c.force_world[2] * c.normal_world[2];
+      const double fty = c.force_world[1] - fn * c.normal_world[1];
+      const double ftz = c.force_world[2] - fn * c.normal_world[2];
+      samples[i] = {c.in_contact, c.slip_speed_m_s, c.in_contact ? std::hypot(fty, ftz) / (mu * c.normal_N) : 0.0};
+      q += fty;
+      p += c.normal_N;
+    }
+    const FrameLabels fl = LabelFrame(samples, labels, pin_contact.data(), pin_slip.data());
+    DomeSample s;
+    s.q_ratio = std::abs(q) / (mu * p);
+    s.contacting = fl.n_contact;
+    s.sticking = fl.n_contact - fl.n_slip;
+    s.c_ratio = fl.n_contact > 0 ? std::sqrt(static_cast<double>(s.sticking) / fl.n_contact) : 0.0;
+    for (int i = 0; i < N; ++i) {
+      if (pin_contact[i] && pin_slip[i] && std::isnan(first_slip_q[i])) first_slip_q[i] = s.q_ratio;
+    }
+    out.samples.push_back(s);
+    if (fl.gross_slip) {
+      out.gross_q_ratio = s.q_ratio;
+      break;
+    }
+  }
+  for (const auto& s : out.samples) {
+    if (s.q_ratio < 0.1 || s.q_ratio > 0.9) continue;
+    ++out.samples_judged;
+    const double cm = std::cbrt(1.0 - s.q_ratio), brush = std::pow(1.0 - s.q_ratio, 0.25);
+    if (s.c_ratio >= cm - opts.tolerance && s.c_ratio <= brush + opts.tolerance) out.between_fraction += 1.0;
+  }
+  if (out.samples_judged > 0) out.between_fraction /= out.samples_judged;
+  // Outside-in: distance from the axis against the load at first slip.
+  std::vector<double> radius, order;
+  for (int i = 0; i < N; ++i) {
+    if (std::isnan(first_slip_q[i])) continue;
+    radius.push_back(-lattice.pins[i].polar_rad);
+    order.push_back(first_slip_q[i]);
+  }
+  out.outside_in_correlation = SpearmanCorrelation(radius, order);
+  return out;
+}
+
+std::string FormatDomeCheck(const DomeCheck& c, double between_required, double gross_error_allowed) {
+  std::string out = fmt::format("dome under rising tangential load (membrane-coupled lattice, {} pins in contact, "
+                                "mu P = {:.4f} N)\n",
+                                c.pins_in_contact, c.mu_P_N);
+  out += fmt::format("  {:>8} {:>8} {:>10} {:>10} {:>9}\n", "Q/muP", "c/a_sim", "c/a_CM", "c/a_brush", "stick/in");
+  const size_t stride = std::max<size_t>(1, c.samples.size() / 12);
+  for (size_t k = 0; k < c.samples.size(); k += stride) {
+    const DomeSample& s = c.samples[k];
+    const double q = std::min(1.0, s.q_ratio);
+    out += fmt::format("  {:>8.3f} {:>8.3f} {:>10.3f} {:>10.3f} {:>5}/{}\n", s.q_ratio, s.c_ratio, std::cbrt(1.0 - q),
+                       std::pow(1.0 - q, 0.25), s.sticking, s.contacting);
+  }
+  const bool ok_gross = std::abs(c.gross_q_ratio - 1.0) <= gross_error_allowed;
+  out += fmt::format("  gross slip at Q = {:.4f} mu P (required within {:.0f} %): {}\n", c.gross_q_ratio,
+                     100.0 * gross_error_allowed, ok_gross ? "PASS" : "FAIL");
+  out += fmt::format("  stick radius between Cattaneo-Mindlin and brush in {:.1f} % of {} samples with 0.1 <= Q/muP <= "
+                     "0.9 (required >= {:.0f} %): {}\n",
+                     100.0 * c.between_fraction, c.samples_judged, 100.0 * between_required,
+                     c.between_fraction >= between_required ? "PASS" : "FAIL");
+  out += fmt::format("  stick region shrinks outside-in: Spearman(-radius, load at first slip) {:.3f} (required >= 0.9): "
+                     "{}\n",
+                     c.outside_in_correlation, c.outside_in_correlation >= 0.9 ? "PASS" : "FAIL");
+  return out;
+}
+
 double SpearmanCorrelation(const std::vector<double>& a, const std::vector<double>& b) {
   // Ranks with ties averaged, then the Pearson correlation of the ranks.
   auto ranks = [](const std::vector<double>& x) {

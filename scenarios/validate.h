@@ -50,6 +50,46 @@ struct BrushCheck {
 /// the brush model: pin i sticks while k_t u <= mu N_i, Q = sum_i min(k_t u, mu N_i).
 BrushCheck RunBrushCheck(const BrushCheckOptions& opts);
 
+/// Settings of the dome check (coupled lattice under rising tangential load).
+struct DomeCheckOptions {
+  ContactRigSpec rig;               ///< skin (a membrane-coupled lattice), contact, solver
+  double depth_mm = 2.0;            ///< plate indentation at the apex
+  double shear_speed_mm_s = 0.1;    ///< plate tangential speed (quasi-static: viscous forces < 1 % of mu P)
+  double sample_every_s = 0.01;     ///< sampling interval of the shear ramp
+  double tolerance = 0.02;          ///< allowance on c/a for the lattice's discreteness (one pin of ~60)
+};
+
+/// One sample of the dome's shear ramp.
+struct DomeSample {
+  double q_ratio = 0.0;   ///< Q / (mu P)
+  double c_ratio = 0.0;   ///< stick radius over contact radius, sqrt(sticking / contacting pins)
+  int sticking = 0;
+  int contacting = 0;
+};
+
+/// Result of the dome check.
+struct DomeCheck {
+  std::vector<DomeSample> samples;
+  double mu_P_N = 0.0;
+  int pins_in_contact = 0;
+  double gross_q_ratio = 0.0;     ///< Q / (mu P) when every contacting pin slides (1 = Coulomb)
+  /// Fraction of samples with 0.1 <= Q/muP <= 0.9 whose c/a lies between the
+  /// Cattaneo-Mindlin (1 - q)^(1/3) and brush (1 - q)^(1/4) curves (within tolerance).
+  double between_fraction = 0.0;
+  int samples_judged = 0;
+  /// Spearman rank correlation between each pin's distance from the axis and the load at
+  /// which it first slips, negated: +1 = the stick region shrinks strictly outside-in.
+  double outside_in_correlation = 0.0;
+};
+
+/// Presses a membrane-coupled lattice onto a flat plate and shears the plate slowly to
+/// gross slip (single-coefficient Coulomb friction), comparing the stick region with
+/// Cattaneo-Mindlin and the brush model.
+DomeCheck RunDomeCheck(const DomeCheckOptions& opts);
+
+/// Text report of a dome check.
+std::string FormatDomeCheck(const DomeCheck& c, double between_required, double gross_error_allowed);
+
 /// Spearman rank correlation of two equal-length samples (ties get average ranks).
 double SpearmanCorrelation(const std::vector<double>& a, const std::vector<double>& b);
 

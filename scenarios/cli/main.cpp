@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "scenarios/cli/detect_commands.h"
 #include "scenarios/incipient_report.h"
 #include "scenarios/registry.h"
+#include "scenarios/sweep.h"
 #include "scenarios/validate.h"
 #include "sensors/dataset.h"
 #include "sim/files.h"
@@ -151,6 +153,33 @@ int main(int argc, char** argv) {
   add_config_opts(cmd_validate);
   cmd_validate->get_option("scenario")->required(false);
 
+  // tactip sweep
+  auto* cmd_sweep = app.add_subcommand(
+      "sweep", "Run a scenario over a grid of config values; one CSV row per design with its incipient-slip figures "
+               "and one heatmap (SVG) per metric.");
+  add_config_opts(cmd_sweep);
+  std::vector<std::string> sweep_params;
+  int sweep_runs = 4;
+  tactip::IncipientParams sweep_detector;
+  cmd_sweep->add_option("--param", sweep_params,
+                        "Swept key: KEY=START:STOP:STEP, KEY=A,B,C or KEY=V (repeatable; first varies slowest; "
+                        "heatmaps need 1 or 2).")
+      ->required()
+      ->type_name("SPEC");
+  cmd_sweep->add_option("--runs", sweep_runs, "Runs per design; every design uses the same run seeds (default 4).")
+      ->check(CLI::Range(1, 100000));
+  cmd_sweep->add_option("--seed", seed, "Master seed (default 1); the same seed reproduces the sweep exactly.");
+  cmd_sweep->add_option("--jobs", jobs, "Worker threads (default: all cores); results do not depend on it.")
+      ->check(CLI::Range(0, 256));
+  cmd_sweep->add_option("--out", out_path, "Output folder (default sweep/); created if missing.");
+  cmd_sweep->add_option("--window", sweep_detector.window, "Incipient detector window W (default 5).")
+      ->check(CLI::Range(1, 1000));
+  cmd_sweep->add_option("--speed-thr-px", sweep_detector.speed_thr_px, "Incipient detector s_thr (default 0.2).")
+      ->check(CLI::PositiveNumber);
+  cmd_sweep->add_option("--count-thr", sweep_detector.count_thr, "Incipient detector I_thr (default 4).")
+      ->check(CLI::Range(1, 100000));
+  cmd_sweep->add_flag("--quiet", quiet, "No per-design progress lines.");
+
   // tactip report incipient
   std::string report_what, report_path, report_csv;
   tactip::IncipientParams report_params;
@@ -186,7 +215,7 @@ int main(int argc, char** argv) {
 
   // Long simulations stop cleanly on Ctrl-C; other commands keep the default handling
   // (their outputs are written atomically at the end).
-  if (*cmd_gen || app.got_subcommand("bench")) {
+  if (*cmd_gen || *cmd_sweep || app.got_subcommand("bench")) {
     std::signal(SIGINT, OnSignal);
     std::signal(SIGTERM, OnSignal);
   }
@@ -218,13 +247,27 @@ int main(int argc, char** argv) {
       o.rig.sim = rail.sim;
       o.rig.skin = rail.skin;
       o.rig.contact = rail.contact;
-      std::fprintf(stderr, "validate: pressing an uncoupled %d-ring lattice and shearing it past gross slip\n",
-                   rail.skin.rings);
+      std::fprintf(stderr, "validate: pressing an uncoupled lattice and shearing it past gross slip\n");
       const tactip::BrushCheck c = tactip::RunBrushCheck(o);
       constexpr double kAgreement = 0.98, kLoadError = 0.03;
       std::printf("%s", tactip::FormatBrushCheck(c, kAgreement, kLoadError).c_str());
-      const bool ok = c.state_agreement >= kAgreement && c.load_error_max <= kLoadError &&
-                      c.slip_order_correlation >= 0.9;
+      bool ok = c.state_agreement >= kAgreement && c.load_error_max <= kLoadError && c.slip_order_correlation >= 0.9;
+      // The dome: the membrane-coupled lattice (the fingerprint-v2 skin unless --skin
+      // names another membrane skin) with single-coefficient friction at 1 ms.
+      std::vector<std::string> dome_sets = tactip::SkinPreset(skin_name.empty() ? "fingerprint-v2" : skin_name);
+      dome_sets.push_back("sim.timestep_s=0.001");
+      dome_sets.insert(dome_sets.end(), sets.begin(), sets.end());
+      const auto dome_cfg = tactip::LoadConfig<tactip::RailScenarioConfig>(config_path, dome_sets);
+      tactip::DomeCheckOptions d;
+      d.rig.sim = dome_cfg.sim;
+      d.rig.skin = dome_cfg.skin;
+      d.rig.contact = dome_cfg.contact;
+      std::fprintf(stderr, "validate: shearing the %s lattice to gross slip\n", dome_cfg.skin.pattern.c_str());
+      const tactip::DomeCheck dc = tactip::RunDomeCheck(d);
+      constexpr double kBetween = 0.9, kGross = 0.03;
+      std::printf("%s", tactip::FormatDomeCheck(dc, kBetween, kGross).c_str());
+      ok = ok && std::abs(dc.gross_q_ratio - 1.0) <= kGross && dc.between_fraction >= kBetween &&
+           dc.outside_in_correlation >= 0.9;
       if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
       return ok ? 0 : 1;
     }
@@ -266,6 +309,40 @@ int main(int argc, char** argv) {
         tactip::WriteFileAtomic(out_path, xml);
         std::fprintf(stderr, "wrote %s (%zu bytes)\n", out_path.c_str(), xml.size());
       }
+      return 0;
+    }
+    if (*cmd_sweep) {
+      tactip::SweepOptions o;
+      o.scenario = &entry;
+      o.base = src;
+      for (const auto& p : sweep_params) o.params.push_back(tactip::ParseSweepParam(p));
+      o.runs = sweep_runs;
+      o.seed = seed;
+      o.jobs = jobs;
+      o.out_dir = out_path.empty() ? "sweep" : out_path;
+      o.detector = sweep_detector;
+      o.stop = &g_stop;
+      const auto designs = tactip::ExpandGrid(o.params);
+      if (!quiet) {
+        std::fprintf(stderr, "sweeping %zu design(s) x %d run(s) of %s into %s/\n", designs.size(), sweep_runs,
+                     entry.name.c_str(), o.out_dir.c_str());
+      }
+      const auto wall0 = std::chrono::steady_clock::now();
+      const auto results = tactip::RunSweep(o, [&](int done, int total, const tactip::SweepDesignResult& r) {
+        if (quiet) return;
+        std::string d;
+        for (const auto& [k, v] : r.design) d += (d.empty() ? "" : " ") + k + "=" + v;
+        std::fprintf(stderr,
+                     "[%d/%d] %s: %d pins, incipient in %d/%d runs, lead %s +- %s s, pre-slip %s, peak %s px/frame, "
+                     "detector before fall %d/%d (%.1f s)\n",
+                     done, total, d.c_str(), r.n_pins, r.summary.with_incipient, r.summary.runs,
+                     Fmt(r.summary.lead_gross_mean_s).c_str(), Fmt(r.summary.lead_gross_std_s).c_str(),
+                     Fmt(r.summary.pre_slip_fraction_mean).c_str(), Fmt(r.summary.peak_speed_mean_px).c_str(),
+                     r.summary.detected_before_fall, r.summary.runs, r.wall_time_s);
+      });
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      std::fprintf(stderr, "done: %zu designs in %.1f s; wrote %s/designs.csv, runs.csv%s\n", results.size(), wall,
+                   o.out_dir.c_str(), o.params.size() <= 2 ? " and one heatmap per metric (*.svg)" : "");
       return 0;
     }
     if (*cmd_gen) {

@@ -1,0 +1,93 @@
+// `tactip sweep` end to end: one CSV row per design, heatmaps, exact reproduction with
+// the same seed, and bad grids rejected before anything runs.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_helpers.h"
+
+namespace tactip {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliResult;
+using testing::RunTactip;
+using testing::Slurp;
+
+class SweepCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("tactip_sweep_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  CliResult Run(const std::string& args) { return RunTactip(args, dir_); }
+  fs::path dir_;
+};
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// Drops the last `n` comma-separated columns (timings) of every line.
+std::string WithoutLastColumns(const std::string& csv, int n) {
+  std::string out;
+  for (std::string line : Lines(csv)) {
+    for (int k = 0; k < n; ++k) line = line.substr(0, line.rfind(','));
+    out += line + "\n";
+  }
+  return out;
+}
+
+TEST_F(SweepCliTest, GridGivesOneRowPerDesignHeatmapsAndReproducesExactly) {
+  const std::string args =
+      "sweep incipient --param skin.thickness_mm=0.5,1 --param skin.ridge_spacing_mm=3,4 --runs 1 --quiet --out ";
+  const CliResult a = Run(args + (dir_ / "a").string());
+  ASSERT_EQ(a.code, 0) << a.err;
+  const std::string csv = Slurp(dir_ / "a" / "designs.csv");
+  const auto rows = Lines(csv);
+  ASSERT_EQ(rows.size(), 5u) << csv;  // header + 2 x 2 designs, first key slowest
+  EXPECT_EQ(rows[0].rfind("design,skin.thickness_mm,skin.ridge_spacing_mm,n_pins,", 0), 0u) << rows[0];
+  EXPECT_EQ(rows[1].rfind("0,0.5,3,127,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[2].rfind("1,0.5,4,61,", 0), 0u) << rows[2];
+  EXPECT_EQ(rows[4].rfind("3,1,4,61,", 0), 0u) << rows[4];
+  EXPECT_EQ(Lines(Slurp(dir_ / "a" / "runs.csv")).size(), 5u);
+  for (const char* m : {"lead_gross_mean_s", "lead_gross_std_s", "pre_slip_fraction", "peak_speed_px",
+                        "detector_lead_fall_s", "detector_miss_rate"}) {
+    const std::string svg = Slurp(dir_ / "a" / (std::string(m) + ".svg"));
+    EXPECT_NE(svg.find("<svg"), std::string::npos) << m;
+    size_t cells = 0;
+    for (size_t p = svg.find("class=\"cell\""); p != std::string::npos; p = svg.find("class=\"cell\"", p + 1)) ++cells;
+    EXPECT_EQ(cells, 4u) << m;
+  }
+  // Same seed: identical figures (only the timing columns may differ).
+  const CliResult b = Run(args + (dir_ / "b").string() + " --jobs 1");
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_EQ(WithoutLastColumns(csv, 2), WithoutLastColumns(Slurp(dir_ / "b" / "designs.csv"), 2));
+  EXPECT_EQ(Slurp(dir_ / "a" / "runs.csv"), Slurp(dir_ / "b" / "runs.csv"));
+}
+
+TEST_F(SweepCliTest, InvalidDesignIsRejectedBeforeAnythingRuns) {
+  // The second value breaks the v2 pin rule (pin longer than ridge + skin).
+  const CliResult r = Run("sweep incipient --param skin.pin_length_mm=1,4 --runs 1 --out " + (dir_ / "bad").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("design skin.pin_length_mm=4"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad" / "designs.csv"));
+  const CliResult k = Run("sweep incipient --param skin.nope=1,2 --runs 1 --out " + (dir_ / "bad").string());
+  EXPECT_EQ(k.code, 2);
+  EXPECT_NE(k.err.find("unknown config key 'skin.nope'"), std::string::npos) << k.err;
+  const CliResult s = Run("sweep incipient --param skin.thickness_mm=1:0:1 --out " + (dir_ / "bad").string());
+  EXPECT_EQ(s.code, 2);
+  EXPECT_NE(s.err.find("stop < start"), std::string::npos) << s.err;
+}
+
+}  // namespace
+}  // namespace tactip
