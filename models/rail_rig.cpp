@@ -86,8 +86,9 @@ StiffMode RailStiffestMode(const RailSceneSpec& spec) {
   mode.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, "
               "skin.thickness_mm, skin.pin_mass_g)";
   if (spec.skin.coupling == "membrane") {
-    // The shear mode's damping is raised to keep it stable, so it is reported for
-    // completeness; it binds only if the normal mode and the arm allow more.
+    // A membrane lattice raises its joint damping to keep its modes stable (reported for
+    // completeness; a mode binds only if the others allow more).
+    mode.zeta = mech.NormalDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * mode.omega);
     const double w = mech.StiffestShearOmega();
     const double zeta = mech.TipDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * w);
     if (MaxStableTimestep(w, zeta) < MaxStableTimestep(mode.omega, mode.zeta)) {

@@ -255,15 +255,23 @@ double SkinMechanics::StiffestShearOmega() const {
   return std::sqrt((k_tip_N_m + 2.0 * max_degree * k_couple_N_m) / pin_mass_kg);
 }
 
-double SkinMechanics::TipDamping(double timestep_s) const {
-  // The tendon springs are integrated explicitly; joint damping implicitly. Raise the
-  // damping until the stiffest shear mode is stable at the timestep with a 20 % margin:
-  // MaxStableTimestep(omega, zeta) >= 1.2 dt.
-  const double w = StiffestShearOmega();
+namespace {
+// The tendon springs are integrated explicitly, joint damping implicitly: the damping
+// that keeps a mode of frequency w stable at dt with a 20 % margin,
+// MaxStableTimestep(w, zeta) >= 1.2 dt.
+double StableDamping(double w, double mass, double timestep_s) {
   const double x = 1.2 * timestep_s * w / (0.9 * 2.0);  // needed zeta + sqrt(zeta^2 + 1)
   const double zeta = x > 1.0 ? (x * x - 1.0) / (2.0 * x) : 0.0;
-  const double floor = 2.0 * zeta * std::sqrt(w * w * pin_mass_kg * pin_mass_kg);
-  return std::max(tip_damping_Ns_m, floor);
+  return 2.0 * zeta * w * mass;
+}
+}  // namespace
+
+double SkinMechanics::TipDamping(double timestep_s) const {
+  return std::max(tip_damping_Ns_m, StableDamping(StiffestShearOmega(), pin_mass_kg, timestep_s));
+}
+
+double SkinMechanics::NormalDamping(double timestep_s) const {
+  return std::max(pin_damping_Ns_m, StableDamping(StiffestOmega(), pin_mass_kg, timestep_s));
 }
 
 std::string SkinNames::PinBody(int i) { return fmt::format("pin{}", i); }
@@ -287,6 +295,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   const bool shell_mode = skin.coupling == "shell";
   const bool membrane = skin.coupling == "membrane";
   const double c_tip = membrane ? mech.TipDamping(timestep_s) : mech.tip_damping_Ns_m;
+  const double c_normal = membrane ? mech.NormalDamping(timestep_s) : mech.pin_damping_Ns_m;
 
   SkinPart part;
   part.collidable = collidable;
@@ -298,10 +307,10 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   shell.Set("name", SkinNames::kShell);
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
-                            "shear damping {:.3g} N s/m",
+                            "shear damping {:.3g} N s/m, normal damping {:.3g} N s/m",
                             skin.pattern, skin.coupling, lattice.size(), mech.k_normal_N_m, mech.k_shear_N_m,
                             mech.k_bend_N_m, mech.membrane_N_m, mech.k_rock_N_m, mech.k_tip_N_m, mech.k_couple_N_m,
-                            c_tip));
+                            c_tip, c_normal));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
   for (const char* axis : {"y", "z"}) {
@@ -333,7 +342,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
           .Set("type", "slide")
           .Set("axis", std::vector<double>{1, 0, 0})
           .Set("stiffness", mech.k_normal_N_m)
-          .Set("damping", mech.pin_damping_Ns_m);
+          .Set("damping", c_normal);
     }
     if (!shell_mode && moving[i]) {
       // The pin's own shear springs: gel column (in series with its ridge).

@@ -200,6 +200,10 @@ struct SkinMechanics {
   /// physical value (shear_damping_ratio on k_tip), raised where the stiffest shear mode
   /// would otherwise be unstable (tendon springs are integrated explicitly).
   double TipDamping(double timestep_s) const;
+  /// Normal damping per pin of a membrane lattice at this timestep: the physical value
+  /// (damping_ratio on k_normal), raised where the stiffest bending-coupled normal mode
+  /// would otherwise be unstable.
+  double NormalDamping(double timestep_s) const;
 };
 
 /// The `--skin NAME` presets: "skin.key=value" overrides for smooth, fingerprint-v1 and

@@ -22,6 +22,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kExtraRetractM = 5e-3;  // keep retracting this far past the press before giving up
+constexpr double kOffDropM = 10e-3;      // an object this far below its held position has left the skin
 
 // Quintic smooth step: 0 -> 1 with zero velocity and acceleration at both ends.
 double SmoothStep(double u) {
@@ -234,6 +235,7 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   double end_time = sched.give_up;
   double prev_margin = kNaN, prev_skin = kNaN, prev_t = 0.0;
   double rel_ref = kNaN, creep_ref = kNaN, creep_max = 0.0;
+  bool ending = false;
 
   long long frame = 0;
   long long next_frame_step = FrameStep(0, c.sensor.frame_rate_hz, dt);
@@ -380,6 +382,13 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
       if (std::isnan(sum.gross_slip_onset_s)) creep_max = std::max(creep_max, std::abs(creep - creep_ref));
       if (std::isnan(sum.object_fall_s) && rel_ref - rel > c.labels.fall_threshold_mm * 1e-3) {
         sum.object_fall_s = tf;
+      }
+      // The run ends post_fall_s after the fall once the object really slides off: a
+      // compliant (fingerprint) skin can sag past the fall threshold while its centre
+      // still sticks, so the fall alone does not end it unless the drop is large.
+      const bool off = !std::isnan(sum.gross_slip_onset_s) || rel_ref - rel > kOffDropM;
+      if (!std::isnan(sum.object_fall_s) && off && !ending) {
+        ending = true;
         end_time = std::min(end_time, t + c.rail.post_fall_s);
       }
     }

@@ -55,16 +55,17 @@ std::string SweepDesignsCsv(const std::vector<SweepParam>& params, const std::ve
   out += ",n_pins,n_collidable,runs,runs_with_incipient";
   for (const auto& m : SweepMetrics()) out += "," + m.name;
   out += ",lead_fall_mean_s,alarm_before_gross,first_slip_radius_ratio,tracking_correlation,tracking_error,"
-         "sim_time_s,wall_time_s\n";
+         "shear_relaxation_s,sim_time_s,wall_time_s\n";
   for (size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
     out += std::to_string(i);
     for (const auto& kv : r.design) out += "," + kv.second;
     out += fmt::format(",{},{},{},{}", r.n_pins, r.n_collidable, r.summary.runs, r.summary.with_incipient);
     for (const auto& m : SweepMetrics()) out += "," + Num(m.value(r));
-    out += fmt::format(",{},{},{},{},{},{:.3f},{:.3f}\n", Num(r.summary.lead_fall_mean_s), r.summary.alarm_before_gross,
-                       Num(r.summary.first_slip_radius_ratio_mean), Num(r.summary.tracking_correlation_mean),
-                       Num(r.summary.tracking_error_mean), r.sim_time_s, r.wall_time_s);
+    out += fmt::format(",{},{},{},{},{},{},{:.3f},{:.3f}\n", Num(r.summary.lead_fall_mean_s),
+                       r.summary.alarm_before_gross, Num(r.summary.first_slip_radius_ratio_mean),
+                       Num(r.summary.tracking_correlation_mean), Num(r.summary.tracking_error_mean),
+                       Num(r.shear_relaxation_s), r.sim_time_s, r.wall_time_s);
   }
   return out;
 }
@@ -101,6 +102,10 @@ std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
     const RailScenario scenario(configs[i]);
     r.n_pins = scenario.n_pins();
     r.n_collidable = scenario.n_collidable();
+    const SkinMechanics mech = SkinMechanics::From(configs[i].skin, PinLattice::Build(configs[i].skin));
+    const double c_tip = configs[i].skin.coupling == "membrane" ? mech.TipDamping(configs[i].sim.timestep_s)
+                                                                 : mech.tip_damping_Ns_m;
+    r.shear_relaxation_s = c_tip / mech.k_tip_N_m;
     RunRailRuns(scenario, opts.runs, opts.seed, opts.jobs, opts.stop, [&](RunRecord&& rec, const RailRunSummary& s) {
       r.runs.push_back(AnalyzeIncipientRun(rec, opts.detector));
       r.sim_time_s += s.sim_time_s;

@@ -35,6 +35,9 @@ struct SweepDesignResult {
   std::vector<IncipientRunMetrics> runs;
   int n_pins = 0;
   int n_collidable = 0;
+  /// Time constant of the skin's collective shear mode, c_tip / k_tip (s): the joint
+  /// damping a membrane lattice needs for stability at the timestep slows it (see README).
+  double shear_relaxation_s = 0.0;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
 };

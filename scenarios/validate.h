@@ -53,7 +53,7 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts);
 /// Settings of the dome check (coupled lattice under rising tangential load).
 struct DomeCheckOptions {
   ContactRigSpec rig;               ///< skin (a membrane-coupled lattice), contact, solver
-  double depth_mm = 2.0;            ///< plate indentation at the apex
+  double depth_mm = 3.0;            ///< plate indentation at the apex (3 mm: 37 v2 pins in contact)
   double shear_speed_mm_s = 0.1;    ///< plate tangential speed (quasi-static: viscous forces < 1 % of mu P)
   double sample_every_s = 0.01;     ///< sampling interval of the shear ramp
   double tolerance = 0.02;          ///< allowance on c/a for the lattice's discreteness (one pin of ~60)

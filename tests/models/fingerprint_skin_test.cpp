@@ -1,0 +1,451 @@
+// Fingerprint skins (fingerprint-v1 raised rings, fingerprint-v2 wave): the ring layout of
+// the pin lattice, the ridge mechanics derived from the materials, the shear damping
+// floor of the membrane lattice, and the MJCF of a membrane-coupled skin.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "models/rail_rig.h"
+#include "models/skin.h"
+#include "sim/sim_config.h"
+#include "sim/simulation.h"
+
+namespace tactip {
+namespace {
+
+/// A SkinConfig with the `--skin NAME` preset applied (the preset's keys carry the
+/// "skin." section prefix, which a bare SkinConfig does not have).
+SkinConfig PresetSkin(const std::string& name) {
+  SkinConfig s;
+  for (const auto& assignment : SkinPreset(name)) {
+    auto [key, value] = ParseAssignment(assignment);
+    EXPECT_EQ(key.rfind("skin.", 0), 0u) << "preset key outside the skin section: " << key;
+    ApplyFlat(s, FlatConfig{{key.substr(5), value}});
+  }
+  ValidateConfig(s);
+  return s;
+}
+
+/// Message of the InputError thrown by `f` ("" if none was thrown).
+template <class F>
+std::string InputErrorOf(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// Neighbour count of every pin.
+std::vector<int> Degrees(const PinLattice& lat) {
+  std::vector<int> d(lat.size(), 0);
+  for (const auto& e : lat.neighbours) {
+    ++d[e[0]];
+    ++d[e[1]];
+  }
+  return d;
+}
+
+/// Ring-layout checks shared by both fingerprint presets.
+void ExpectRingLayout(const SkinConfig& skin, int rings) {
+  const PinLattice lat = PinLattice::Build(skin);
+  // 1 + 6 (1 + 2 + ... + K) pins.
+  ASSERT_EQ(lat.size(), static_cast<size_t>(1 + 3 * rings * (rings + 1)));
+  std::map<int, std::vector<const PinGeometry*>> by_ring;
+  for (const auto& p : lat.pins) by_ring[p.ring].push_back(&p);
+  ASSERT_EQ(by_ring.size(), static_cast<size_t>(rings + 1));
+  for (int k = 0; k <= rings; ++k) {
+    const auto& ring = by_ring[k];
+    ASSERT_EQ(ring.size(), static_cast<size_t>(k == 0 ? 1 : skin.pins_per_ring * k)) << "ring " << k;
+    for (size_t j = 0; j < ring.size(); ++j) {
+      const PinGeometry& p = *ring[j];
+      // Arc radius along the dome: k ridge steps.
+      EXPECT_NEAR(p.polar_rad * skin.radius_mm, k * skin.ridge_spacing_mm, 1e-9) << "pin " << p.index;
+      const auto& n = p.normal;
+      EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-12);
+      // Equally spaced in azimuth, in azimuth order.
+      if (k > 0) {
+        EXPECT_NEAR(p.azimuth_rad, 2.0 * std::numbers::pi * static_cast<double>(j) / ring.size(), 1e-9)
+            << "pin " << p.index;
+      }
+    }
+  }
+  // Pins are ordered by ring and indexed by position.
+  for (size_t i = 0; i < lat.size(); ++i) {
+    EXPECT_EQ(lat.pins[i].index, static_cast<int>(i));
+    if (i > 0) {
+      EXPECT_LE(lat.pins[i - 1].ring, lat.pins[i].ring);
+    }
+  }
+  // Edges: i < j, no duplicates, only within a ring or between adjacent rings, and
+  // never longer than 1.5 ridge steps in the plane of the layout.
+  std::set<std::array<int, 2>> seen;
+  for (const auto& e : lat.neighbours) {
+    EXPECT_LT(e[0], e[1]);
+    EXPECT_TRUE(seen.insert(e).second) << "duplicate edge " << e[0] << "-" << e[1];
+    const PinGeometry& a = lat.pins[e[0]];
+    const PinGeometry& b = lat.pins[e[1]];
+    EXPECT_LE(std::abs(a.ring - b.ring), 1) << "edge " << e[0] << "-" << e[1];
+    const double ra = a.polar_rad * skin.radius_mm, rb = b.polar_rad * skin.radius_mm;
+    const double d = std::hypot(ra * std::cos(a.azimuth_rad) - rb * std::cos(b.azimuth_rad),
+                                ra * std::sin(a.azimuth_rad) - rb * std::sin(b.azimuth_rad));
+    EXPECT_LE(d, 1.5 * skin.ridge_spacing_mm) << "edge " << e[0] << "-" << e[1];
+  }
+  const std::vector<int> degree = Degrees(lat);
+  for (size_t i = 0; i < lat.size(); ++i) EXPECT_GE(degree[i], 2) << "pin " << i;
+  EXPECT_EQ(degree[0], skin.pins_per_ring) << "the centre pin links to every pin of ring 1";
+  // Every pin beyond the centre links inwards (the band between two rings is meshed).
+  std::vector<bool> inward(lat.size(), false);
+  for (const auto& e : lat.neighbours) {
+    if (lat.pins[e[1]].ring == lat.pins[e[0]].ring + 1) inward[e[1]] = true;
+  }
+  for (size_t i = 1; i < lat.size(); ++i) EXPECT_TRUE(inward[i]) << "pin " << i << " has no inner neighbour";
+  // The mechanics see the lattice's real maximum degree.
+  EXPECT_EQ(SkinMechanics::From(skin, lat).max_degree, *std::max_element(degree.begin(), degree.end()));
+}
+
+TEST(FingerprintLatticeTest, V2PresetHas127PinsOnSixRingsThreeMillimetresApart) {
+  const SkinConfig v2 = PresetSkin("fingerprint-v2");
+  EXPECT_EQ(v2.pattern, "fingerprint-v2");
+  EXPECT_EQ(v2.coupling, "membrane");
+  ExpectRingLayout(v2, 6);  // 1 + 6 + 12 + ... + 36 = 127
+}
+
+TEST(FingerprintLatticeTest, V1PresetHas91PinsOnFiveRingsFourMillimetresApart) {
+  const SkinConfig v1 = PresetSkin("fingerprint-v1");
+  EXPECT_EQ(v1.pattern, "fingerprint-v1");
+  EXPECT_EQ(v1.ridge_shape, "square");
+  ExpectRingLayout(v1, 5);  // 1 + 6 + 12 + ... + 30 = 91
+}
+
+TEST(FingerprintLatticeTest, RingCountIsTheLargestStepWithinThePatternRadius) {
+  SkinConfig s = PresetSkin("fingerprint-v2");
+  s.pattern_radius_mm = 17.99;  // ring 6 at 18 mm no longer fits
+  EXPECT_EQ(PinLattice::Build(s).size(), 91u);
+  s.pattern_radius_mm = 18.0;  // exactly on the ring
+  EXPECT_EQ(PinLattice::Build(s).size(), 127u);
+  s.pins_per_ring = 8;
+  EXPECT_EQ(PinLattice::Build(s).size(), static_cast<size_t>(1 + 8 * 21));
+}
+
+TEST(FingerprintLatticeTest, UnknownPresetIsAnInputErrorListingTheKnownSkins) {
+  const std::string msg = InputErrorOf([] { SkinPreset("fingerprint-v3"); });
+  EXPECT_NE(msg.find("fingerprint-v3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("smooth, fingerprint-v1, fingerprint-v2"), std::string::npos) << msg;
+  EXPECT_EQ(PresetSkin("smooth").pattern, "smooth");
+  EXPECT_EQ(PresetSkin("smooth").coupling, "shell");
+}
+
+// ---- Mechanics --------------------------------------------------------------------
+
+TEST(FingerprintMechanicsTest, ThickerSkinStiffensRidgesAndCouplingAndShiftsComplianceOutOfTheRidge) {
+  for (const char* name : {"fingerprint-v1", "fingerprint-v2"}) {
+    SCOPED_TRACE(name);
+    SkinConfig thin = PresetSkin(name);
+    SkinConfig thick = thin;
+    thick.thickness_mm = 2.0 * thin.thickness_mm;
+    const SkinMechanics a = SkinMechanics::From(thin, 127);
+    const SkinMechanics b = SkinMechanics::From(thick, 127);
+    EXPECT_GT(b.k_rock_N_m, a.k_rock_N_m);
+    EXPECT_GT(b.k_couple_N_m, a.k_couple_N_m);
+    EXPECT_GT(b.k_link_N_m, a.k_link_N_m);
+    // Share of the link-plus-two-ridges compliance that sits in the ridges.
+    auto ridge_share = [](const SkinMechanics& m) {
+      return (2.0 / m.k_rock_N_m) / (1.0 / m.k_link_N_m + 2.0 / m.k_rock_N_m);
+    };
+    EXPECT_LT(ridge_share(b), ridge_share(a));
+    // The gel under the pin does not depend on the skin.
+    EXPECT_DOUBLE_EQ(b.k_shear_N_m, a.k_shear_N_m);
+  }
+}
+
+TEST(FingerprintMechanicsTest, WiderRidgeSpacingGivesEachPinALargerGelCell) {
+  SkinConfig a = PresetSkin("fingerprint-v2");
+  SkinConfig b = a;
+  b.ridge_spacing_mm = 4.5;
+  const SkinMechanics ma = SkinMechanics::From(a, 127);
+  const SkinMechanics mb = SkinMechanics::From(b, 127);
+  // Cell = one ring step by the arc per pin (2 pi s / pins_per_ring): area ~ s^2.
+  EXPECT_NEAR(ma.cell_area_m2, 3e-3 * 2.0 * std::numbers::pi * 3e-3 / 6.0, 1e-15);
+  EXPECT_NEAR(mb.k_shear_N_m / ma.k_shear_N_m, (4.5 / 3.0) * (4.5 / 3.0), 1e-12);
+  EXPECT_NEAR(mb.k_normal_N_m / ma.k_normal_N_m, (4.5 / 3.0) * (4.5 / 3.0), 1e-12);
+  EXPECT_NEAR(ma.k_shear_N_m, ma.k_normal_N_m / 3.0, 1e-12);
+}
+
+TEST(FingerprintMechanicsTest, RockingStiffnessFallsWithTheSquareOfTheLever) {
+  SkinConfig low = PresetSkin("fingerprint-v1");  // square ridge: lever = height
+  SkinConfig high = low;
+  high.ridge_height_mm = 3.0;
+  const SkinMechanics ml = SkinMechanics::From(low, 91);
+  const SkinMechanics mh = SkinMechanics::From(high, 91);
+  ASSERT_GT(mh.k_rock_N_m, 0.0);
+  EXPECT_NEAR(ml.k_rock_N_m / mh.k_rock_N_m, (3.0 / 2.0) * (3.0 / 2.0), 1e-12);
+  // A sine wave rocks about mid-height: half the lever, four times the stiffness.
+  SkinConfig sine = low;
+  sine.ridge_shape = "sine";
+  const SkinMechanics ms = SkinMechanics::From(sine, 91);
+  EXPECT_NEAR(ms.k_rock_N_m / ml.k_rock_N_m, 4.0, 1e-12);
+}
+
+TEST(FingerprintMechanicsTest, TipAndCouplingAreSeriesCombinations) {
+  for (const char* name : {"fingerprint-v1", "fingerprint-v2"}) {
+    SCOPED_TRACE(name);
+    const SkinConfig s = PresetSkin(name);
+    const SkinMechanics m = SkinMechanics::From(s, 127);
+    ASSERT_GT(m.k_rock_N_m, 0.0);
+    EXPECT_NEAR(m.k_tip_N_m, 1.0 / (1.0 / m.k_shear_N_m + 1.0 / m.k_rock_N_m), 1e-9 * m.k_tip_N_m);
+    EXPECT_LT(m.k_tip_N_m, std::min(m.k_shear_N_m, m.k_rock_N_m));
+    EXPECT_NEAR(m.k_link_N_m, std::sqrt(3.0) / 2.0 * s.skin_modulus_mpa * 1e6 * s.thickness_mm * 1e-3, 1e-9);
+    EXPECT_NEAR(m.k_couple_N_m, 1.0 / (1.0 / m.k_link_N_m + 2.0 / m.k_rock_N_m), 1e-9 * m.k_couple_N_m);
+    // The physical shear damping is set on the tip stiffness.
+    EXPECT_NEAR(m.tip_damping_Ns_m, 2.0 * s.shear_damping_ratio * std::sqrt(m.k_tip_N_m * s.pin_mass_g * 1e-3),
+                1e-12);
+  }
+}
+
+TEST(FingerprintMechanicsTest, SmoothSkinHasNoRidges) {
+  SkinConfig s;  // smooth, shell
+  s.coupling = "membrane";
+  const SkinMechanics m = SkinMechanics::From(s, 127);
+  EXPECT_EQ(m.k_rock_N_m, 0.0);
+  EXPECT_EQ(m.k_tip_N_m, m.k_shear_N_m);
+  EXPECT_EQ(m.k_couple_N_m, m.k_link_N_m);
+  EXPECT_EQ(m.marker_rock_factor, 0.0);
+  // Ridge keys are ignored without a fingerprint pattern.
+  SkinConfig tall = s;
+  tall.ridge_height_mm = 5.0;
+  tall.ridge_spacing_mm = 7.0;
+  EXPECT_EQ(SkinMechanics::From(tall, 127).k_shear_N_m, m.k_shear_N_m);
+  EXPECT_EQ(tall.OuterRadiusMm(), s.radius_mm);
+}
+
+TEST(FingerprintMechanicsTest, MarkerRockFactorPivotsV1MarkersButNotV2) {
+  const SkinConfig v1 = PresetSkin("fingerprint-v1");
+  const SkinConfig v2 = PresetSkin("fingerprint-v2");
+  // v1: the inner pin end sits a skin thickness below the pivot at the ridge root.
+  EXPECT_NEAR(SkinMechanics::From(v1, 91).marker_rock_factor, 1.0 + v1.thickness_mm / v1.ridge_height_mm, 1e-12);
+  EXPECT_NEAR(SkinMechanics::From(v1, 91).marker_rock_factor, 1.25, 1e-12);
+  EXPECT_EQ(SkinMechanics::From(v2, 127).marker_rock_factor, 1.0);
+  // Geometry: the ridges raise the contact surface; contact patches fit between rings.
+  EXPECT_DOUBLE_EQ(v1.OuterRadiusMm(), v1.radius_mm + v1.ridge_height_mm);
+  EXPECT_DOUBLE_EQ(v2.ContactRadiusMm(), std::min(v2.contact_radius_mm, 0.5 * v2.ridge_spacing_mm));
+  SkinConfig narrow = v2;
+  narrow.ridge_spacing_mm = 2.0;
+  EXPECT_DOUBLE_EQ(narrow.ContactRadiusMm(), 1.0);
+}
+
+// ---- Shear damping floor -------------------------------------------------------------
+
+TEST(FingerprintMechanicsTest, TipDampingIsPhysicalWhereStableAndRaisedJustEnoughElsewhere) {
+  const SkinConfig v2 = PresetSkin("fingerprint-v2");
+  const SkinMechanics m = SkinMechanics::From(v2, PinLattice::Build(v2));
+  const double w = m.StiffestShearOmega();
+  const double mass = m.pin_mass_kg;
+  auto zeta_of = [&](double c) { return c / (2.0 * mass * w); };
+  ASSERT_GT(w, 0.0);
+
+  // A small step: the physical damping is already stable, so it is kept.
+  const double dt_small = 0.2 / w;
+  ASSERT_GE(MaxStableTimestep(w, zeta_of(m.tip_damping_Ns_m)), 1.2 * dt_small);
+  EXPECT_EQ(m.TipDamping(dt_small), m.tip_damping_Ns_m);
+
+  // The default 2 ms step is beyond the physical damping's limit: the damping is raised
+  // until the mode is stable with the documented 20 % margin.
+  const double dt = 2e-3;
+  ASSERT_LT(MaxStableTimestep(w, zeta_of(m.tip_damping_Ns_m)), dt) << "premise: 2 ms needs the floor";
+  const double c = m.TipDamping(dt);
+  EXPECT_GT(c, m.tip_damping_Ns_m);
+  EXPECT_GE(MaxStableTimestep(w, zeta_of(c)), dt);
+  EXPECT_NEAR(MaxStableTimestep(w, zeta_of(c)), 1.2 * dt, 1e-9 * dt);  // not more than needed
+  // A larger step needs more damping, and gets it.
+  const double c4 = m.TipDamping(4e-3);
+  EXPECT_GT(c4, c);
+  EXPECT_GE(MaxStableTimestep(w, zeta_of(c4)), 4e-3);
+}
+
+TEST(FingerprintMechanicsTest, StiffestShearModeCountsEveryNeighbourCoupling) {
+  const SkinConfig v2 = PresetSkin("fingerprint-v2");
+  const PinLattice lat = PinLattice::Build(v2);
+  const SkinMechanics m = SkinMechanics::From(v2, lat);
+  EXPECT_NEAR(m.StiffestShearOmega(),
+              std::sqrt((m.k_tip_N_m + 2.0 * m.max_degree * m.k_couple_N_m) / m.pin_mass_kg), 1e-9);
+  SkinMechanics fewer = m;
+  fewer.max_degree = m.max_degree - 1;
+  EXPECT_LT(fewer.StiffestShearOmega(), m.StiffestShearOmega());
+}
+
+// ---- MJCF of a membrane lattice -------------------------------------------------------
+
+/// The pin bodies of a skin part, by pin index.
+std::map<int, const mjcf::Element*> PinBodies(const SkinPart& part) {
+  std::map<int, const mjcf::Element*> out;
+  for (const auto& child : part.body.children()) {
+    if (child.tag() != "body") continue;
+    const std::string name = child.Get("name");
+    out[std::stoi(name.substr(3))] = &child;  // "pin<i>"
+  }
+  return out;
+}
+
+TEST(FingerprintSkinPartTest, MembraneLatticeGivesDofsOnlyToCollidablePins) {
+  const SkinConfig v2 = PresetSkin("fingerprint-v2");
+  const PinLattice lat = PinLattice::Build(v2);
+  RailConfig rail;
+  rail.stimulus = "acrylic";
+  const std::vector<bool> coll = RailCollidablePins(v2, lat, rail, 3.1e-3);
+  const int n_coll = static_cast<int>(std::count(coll.begin(), coll.end(), true));
+  ASSERT_GT(n_coll, 0);
+  ASSERT_LT(n_coll, static_cast<int>(lat.size())) << "premise: some pins cannot reach the plate";
+  const double dt = 2e-3;
+  const SkinPart part = BuildSkin(v2, ContactConfig{}, lat, coll, dt);
+  const SkinMechanics m = SkinMechanics::From(v2, lat);
+  EXPECT_EQ(part.n_collidable, n_coll);
+
+  const auto bodies = PinBodies(part);
+  ASSERT_EQ(bodies.size(), lat.size());
+  std::set<std::string> moving_joints;
+  for (const auto& [i, body] : bodies) {
+    std::vector<std::string> joints;
+    int geoms = 0, sites = 0;
+    for (const auto& c : body->children()) {
+      if (c.tag() == "joint") joints.push_back(c.Get("name"));
+      if (c.tag() == "geom") ++geoms;
+      if (c.tag() == "site") ++sites;
+    }
+    EXPECT_EQ(sites, 2) << "pin " << i << ": inner marker and outer contact point";
+    if (coll[i]) {
+      EXPECT_EQ(geoms, 1) << "pin " << i;
+      EXPECT_EQ(joints, (std::vector<std::string>{SkinNames::PinJoint(i), SkinNames::PinShearJoint(i, 'y'),
+                                                  SkinNames::PinShearJoint(i, 'z')}))
+          << "pin " << i;
+      for (const auto& c : body->children()) {
+        if (c.tag() != "joint" || c.Get("name") == SkinNames::PinJoint(i)) continue;
+        EXPECT_DOUBLE_EQ(std::stod(c.Get("stiffness")), m.k_tip_N_m) << c.Get("name");
+        EXPECT_DOUBLE_EQ(std::stod(c.Get("damping")), m.TipDamping(dt)) << c.Get("name");
+      }
+      moving_joints.insert(joints.begin(), joints.end());
+    } else {
+      EXPECT_EQ(geoms, 0) << "pin " << i;
+      EXPECT_TRUE(joints.empty()) << "non-collidable pin " << i << " has " << joints.size() << " joints";
+    }
+  }
+  // Tendons: bending and membrane springs on every edge with at least one moving end,
+  // each listing only joints that exist.
+  int membrane = 0, bend = 0;
+  for (const auto& t : part.tendons) {
+    const std::string name = t.Get("name");
+    if (name.rfind("membrane_", 0) == 0) {
+      ++membrane;
+      EXPECT_DOUBLE_EQ(std::stod(t.Get("stiffness")), m.k_couple_N_m) << name;
+    } else if (name.rfind("bend_", 0) == 0) {
+      ++bend;
+    } else {
+      ADD_FAILURE() << "unexpected tendon " << name;
+    }
+    ASSERT_FALSE(t.children().empty()) << name;
+    for (const auto& j : t.children()) {
+      EXPECT_EQ(moving_joints.count(j.Get("joint")), 1u) << name << " references " << j.Get("joint");
+    }
+  }
+  int live_edges = 0;
+  for (const auto& e : lat.neighbours) live_edges += (coll[e[0]] || coll[e[1]]) ? 1 : 0;
+  EXPECT_EQ(membrane, 2 * live_edges);
+  EXPECT_EQ(bend, live_edges);
+}
+
+TEST(FingerprintSkinPartTest, ShellCouplingKeepsDofsOnEveryPinAndHasNoMembraneSprings) {
+  SkinConfig v2 = PresetSkin("fingerprint-v2");
+  v2.coupling = "shell";
+  const PinLattice lat = PinLattice::Build(v2);
+  std::vector<bool> coll(lat.size(), false);
+  coll[0] = true;
+  const SkinPart part = BuildSkin(v2, ContactConfig{}, lat, coll, 2e-3);
+  for (const auto& [i, body] : PinBodies(part)) {
+    int joints = 0;
+    for (const auto& c : body->children()) joints += c.tag() == "joint" ? 1 : 0;
+    EXPECT_EQ(joints, 1) << "pin " << i << ": only the normal DOF in shell mode";
+  }
+  for (const auto& t : part.tendons) EXPECT_EQ(t.Get("name").rfind("membrane_", 0), std::string::npos);
+}
+
+TEST(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithThreeDofsPerCollidablePin) {
+  for (const char* name : {"fingerprint-v1", "fingerprint-v2"}) {
+    SCOPED_TRACE(name);
+    RailSceneSpec spec;
+    spec.skin = PresetSkin(name);
+    spec.rail.stimulus = "acrylic";
+    spec.max_depth_m = 3.1e-3;
+    const BuiltScene scene = BuildRailScene(spec);
+    EXPECT_EQ(scene.n_pins, std::string(name) == "fingerprint-v1" ? 91 : 127);
+    ASSERT_LT(scene.n_collidable, scene.n_pins);
+    EXPECT_NE(scene.xml.find("name=\"membrane_"), std::string::npos);
+    const CompiledModel m = CompiledModel::FromXml(scene.xml);
+    // Rig: arm x, arm z, rail slide; skin: normal + two shear DOFs per collidable pin.
+    EXPECT_EQ(m.nv(), 3 + 3 * scene.n_collidable);
+    const PinLattice lat = PinLattice::Build(spec.skin);
+    const auto coll = RailCollidablePins(spec.skin, lat, spec.rail, spec.max_depth_m);
+    for (size_t i = 0; i < lat.size(); ++i) {
+      const int pin = static_cast<int>(i);
+      EXPECT_NO_THROW(m.SiteId(SkinNames::PinSite(pin)));
+      EXPECT_NO_THROW(m.SiteId(SkinNames::PinOuterSite(pin)));
+      if (coll[i]) {
+        EXPECT_NO_THROW(m.JointId(SkinNames::PinShearJoint(pin, 'z'))) << "pin " << i;
+      } else {
+        EXPECT_THROW(m.JointId(SkinNames::PinJoint(pin)), ModelError) << "pin " << i;
+      }
+    }
+    // A deeper press reaches more pins and adds exactly three DOFs for each.
+    spec.max_depth_m = 6.5e-3;
+    const BuiltScene deeper = BuildRailScene(spec);
+    ASSERT_GT(deeper.n_collidable, scene.n_collidable);
+    EXPECT_EQ(CompiledModel::FromXml(deeper.xml).nv(), 3 + 3 * deeper.n_collidable);
+  }
+}
+
+// ---- Validation rules ----------------------------------------------------------------
+
+TEST(FingerprintConfigTest, PatternBeyondTheEquatorIsRejectedNamingTheKey) {
+  SkinConfig s = PresetSkin("fingerprint-v2");
+  s.pattern_radius_mm = 31.0;  // < pi/2 * 20 = 31.42 mm
+  EXPECT_NO_THROW(ValidateConfig(s));
+  s.pattern_radius_mm = 32.0;
+  const std::string msg = InputErrorOf([&] { ValidateConfig(s); });
+  EXPECT_NE(msg.find("skin.pattern_radius_mm = 32: lattice reaches"), std::string::npos) << msg;
+  // The hexagonal ring count does not matter for a fingerprint pattern.
+  s.pattern_radius_mm = 18.0;
+  s.rings = 12;
+  EXPECT_NO_THROW(ValidateConfig(s));
+}
+
+TEST(FingerprintConfigTest, PatternNarrowerThanOneRingIsRejected) {
+  SkinConfig s = PresetSkin("fingerprint-v1");
+  s.pattern_radius_mm = 3.0;  // ridge spacing 4 mm
+  const std::string msg = InputErrorOf([&] { ValidateConfig(s); });
+  EXPECT_NE(msg.find("skin.pattern_radius_mm = 3:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("ridge_spacing_mm"), std::string::npos) << msg;
+}
+
+TEST(FingerprintConfigTest, V2PinsMustNotReachBeyondTheSkinUnderTheWave) {
+  SkinConfig s = PresetSkin("fingerprint-v2");  // ridge 2 mm + skin 1 mm
+  s.pin_length_mm = 3.0;
+  EXPECT_NO_THROW(ValidateConfig(s));
+  s.pin_length_mm = 3.5;
+  const std::string msg = InputErrorOf([&] { ValidateConfig(s); });
+  EXPECT_NE(msg.find("skin.pin_length_mm = 3.5:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("fingerprint-v2"), std::string::npos) << msg;
+  // The rule is specific to v2: v1 pins reach out into their ridges.
+  SkinConfig v1 = PresetSkin("fingerprint-v1");
+  v1.pin_length_mm = 3.5;
+  EXPECT_NO_THROW(ValidateConfig(v1));
+}
+
+}  // namespace
+}  // namespace tactip
