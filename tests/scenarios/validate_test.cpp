@@ -32,6 +32,44 @@ TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
   EXPECT_NEAR(c.samples.back().q_N, c.mu_P_N, kLoadTolerance * c.mu_P_N);
 }
 
+// The membrane-coupled fingerprint-v2 lattice under rising tangential load (physics.md:
+// gross slip at Q = mu P; the stick region shrinks from the outside in).
+TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
+  DomeCheckOptions o;
+  for (const auto& kv : SkinPreset("fingerprint-v2")) {
+    const auto eq = kv.find('=');
+    const std::string key = kv.substr(5, eq - 5), value = kv.substr(eq + 1);  // strip "skin."
+    if (key == "pattern") o.rig.skin.pattern = value;
+    if (key == "coupling") o.rig.skin.coupling = value;
+    if (key == "ridge_shape") o.rig.skin.ridge_shape = value;
+    if (key == "ridge_spacing_mm") o.rig.skin.ridge_spacing_mm = std::stod(value);
+    if (key == "ridge_height_mm") o.rig.skin.ridge_height_mm = std::stod(value);
+    if (key == "thickness_mm") o.rig.skin.thickness_mm = std::stod(value);
+    if (key == "pin_length_mm") o.rig.skin.pin_length_mm = std::stod(value);
+    if (key == "pins_per_ring") o.rig.skin.pins_per_ring = std::stoi(value);
+    if (key == "pattern_radius_mm") o.rig.skin.pattern_radius_mm = std::stod(value);
+  }
+  ASSERT_EQ(o.rig.skin.pattern, "fingerprint-v2");
+  o.rig.sim.timestep_s = 0.001;
+  const DomeCheck c = RunDomeCheck(o);
+  ASSERT_GE(c.pins_in_contact, 19);
+  EXPECT_NEAR(c.gross_q_ratio, 1.0, 0.03);
+  EXPECT_GE(c.outside_in_correlation, 0.9);
+  // The stick region only shrinks while the load rises, from full stick to gross slip.
+  ASSERT_FALSE(c.samples.empty());
+  EXPECT_EQ(c.samples.front().sticking, c.samples.front().contacting);
+  int prev = c.samples.front().sticking;
+  for (const DomeSample& s : c.samples) {
+    EXPECT_LE(s.sticking, prev) << "at Q/muP = " << s.q_ratio;
+    prev = s.sticking;
+  }
+  EXPECT_EQ(c.samples.back().sticking, 0);
+  // A membrane check needs the membrane lattice.
+  DomeCheckOptions rigid = o;
+  rigid.rig.skin.coupling = "shell";
+  EXPECT_THROW(RunDomeCheck(rigid), InputError);
+}
+
 TEST(BrushModelTest, SpearmanHandlesTiesAndDirection) {
   EXPECT_NEAR(SpearmanCorrelation({1, 2, 3, 4}, {10, 20, 30, 40}), 1.0, 1e-12);
   EXPECT_NEAR(SpearmanCorrelation({1, 2, 3, 4}, {4, 3, 2, 1}), -1.0, 1e-12);
