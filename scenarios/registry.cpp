@@ -17,14 +17,9 @@ RailScenarioConfig LoadIncipient(const ConfigSource& src) {
 }  // namespace
 
 RailScenarioConfig IncipientDefaults() {
-  RailScenarioConfig cfg;
   std::vector<std::string> keys = {"rail.stimulus=acrylic", "external.enabled=true", "rail.retract_speed_mm_s=0.3"};
   for (const auto& k : SkinPreset("fingerprint-v2")) keys.push_back(k);
-  for (const auto& k : keys) {
-    auto [key, value] = ParseAssignment(k);
-    ApplyFlat(cfg, FlatConfig{{key, value}});
-  }
-  return cfg;
+  return LoadConfig<RailScenarioConfig>("", keys);
 }
 
 const std::vector<ScenarioEntry>& Scenarios() {

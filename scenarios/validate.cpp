@@ -1,6 +1,7 @@
 #include "scenarios/validate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -16,6 +17,66 @@ double Smooth(double u) {
   u = std::clamp(u, 0.0, 1.0);
   return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
 }
+
+// The contact rig compiled and pressed: the plate moves -x by gap + depth over 1 s and
+// settles; Step() then holds the press and drives the tangential servo, ReadContacts()
+// fills `contacts` (one per pin, culled pins never in contact).
+class PressedRig {
+  const CompiledModel model_;  // declared first: everything below is built from it
+  Simulation sim_;
+
+ public:
+  PressedRig(const ContactRigSpec& spec, double depth_m)
+      : model_(CompiledModel::FromXml(BuildContactRig(spec))),
+        sim_(model_),
+        lattice(PinLattice::Build(spec.skin)),
+        n(static_cast<int>(lattice.size())),
+        contacts(static_cast<size_t>(n)),
+        slot_(static_cast<size_t>(model_.ngeom()), -1),
+        servo_x_(model_.ActuatorId(ContactRigNames::kServoNormal)),
+        servo_y_(model_.ActuatorId(ContactRigNames::kServoShear)),
+        qy_(model_.JointQposAdr(model_.JointId(ContactRigNames::kShear))),
+        press_(spec.gap_m + depth_m),
+        dt_(model_.timestep()) {
+    for (int i = 0; i < n; ++i) {
+      try {
+        slot_[model_.GeomId(SkinNames::PinGeom(i))] = i;
+      } catch (const ModelError&) {
+        // culled pin: cannot reach the plate
+      }
+    }
+    while (t < 1.3) Drive(press_ * Smooth(t / 1.0), 0.0);
+    ReadContacts();
+  }
+  /// One step with the press held and the plate's tangential target at y_target.
+  void Step(double y_target) { Drive(press_, y_target); }
+  void ReadContacts() { sim_.ReadContacts(slot_, contacts); }
+  /// Tangential plate position (m).
+  double PlateY() const { return sim_.Qpos(qy_); }
+
+  const PinLattice lattice;
+  const int n;
+  std::vector<GeomContact> contacts;
+  double t = 0.0;
+
+ private:
+  void Drive(double x_target, double y_target) {
+    sim_.SetControl(servo_x_, -x_target);
+    sim_.SetControl(servo_y_, y_target);
+    sim_.Step();
+    t += dt_;
+  }
+  std::vector<int> slot_;
+  int servo_x_, servo_y_, qy_;
+  double press_, dt_;
+};
+
+// Tangential contact force on a pin, world y and z (the plate shears along y).
+std::array<double, 2> TangentialYZ(const GeomContact& c) {
+  const double fn = c.force_world[0] * c.normal_world[0] + c.force_world[1] * c.normal_world[1] +
+                    c.force_world[2] * c.normal_world[2];
+  return {c.force_world[1] - fn * c.normal_world[1], c.force_world[2] - fn * c.normal_world[2]};
+}
 }  // namespace
 
 BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
@@ -24,38 +85,13 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
   spec.skin.coupling = "none";
   spec.skin.shear_damping_ratio = opts.shear_damping_ratio;
   spec.max_depth_m = opts.depth_mm * 1e-3;
-  const CompiledModel model = CompiledModel::FromXml(BuildContactRig(spec));
-  Simulation sim(model);
-  const PinLattice lattice = PinLattice::Build(spec.skin);
-  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
-  const int N = static_cast<int>(lattice.size());
-  std::vector<int> slot(model.ngeom(), -1);
-  for (int i = 0; i < N; ++i) {
-    try {
-      slot[model.GeomId(SkinNames::PinGeom(i))] = i;
-    } catch (const ModelError&) {
-      // culled pin: cannot reach the plate
-    }
-  }
-  const int servo_x = model.ActuatorId(ContactRigNames::kServoNormal);
-  const int servo_y = model.ActuatorId(ContactRigNames::kServoShear);
-  const int qy = model.JointQposAdr(model.JointId(ContactRigNames::kShear));
-  const double mu = spec.contact.friction, dt = model.timestep();
-
-  // Press: the plate moves -x by gap + depth over 1 s, then settles.
-  const double press = spec.gap_m + opts.depth_mm * 1e-3;
-  std::vector<GeomContact> contacts(N);
-  double t = 0.0;
-  auto step = [&](double x_target, double y_target) {
-    sim.SetControl(servo_x, -x_target);
-    sim.SetControl(servo_y, y_target);
-    sim.Step();
-    t += dt;
-  };
-  while (t < 1.3) step(press * Smooth(t / 1.0), 0.0);
+  PressedRig rig(spec, spec.max_depth_m);
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, rig.lattice.size());
+  const int N = rig.n;
+  const double mu = spec.contact.friction;
+  const std::vector<GeomContact>& contacts = rig.contacts;
 
   // Normal loads after the press fix the brush prediction's slip displacements.
-  sim.ReadContacts(slot, contacts);
   BrushCheck out;
   out.k_t_N_m = mech.k_shear_N_m;
   double sum_n = 0.0, n_max = 0.0;
@@ -71,27 +107,24 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
   // Shear ramp at constant speed past the last pin's slip displacement, sampled.
   const double u_max = opts.overshoot * mu * n_max / mech.k_shear_N_m;
   const double v = opts.shear_speed_mm_s * 1e-3;
-  const double y0 = sim.Qpos(qy);
-  const double t0 = t;
+  const double y0 = rig.PlateY();
+  const double t0 = rig.t;
   LabelConfig labels;
   std::vector<PinContactSample> samples(N);
   std::vector<std::uint8_t> pin_contact(N), pin_slip(N);
   long agree = 0;
   std::vector<double> first_slip_u(N, std::nan(""));
   double next_sample = t0 + opts.sample_every_s;
-  while (t - t0 < u_max / v) {
-    step(press, v * (t - t0));
-    if (t < next_sample) continue;
+  while (rig.t - t0 < u_max / v) {
+    rig.Step(v * (rig.t - t0));
+    if (rig.t < next_sample) continue;
     next_sample += opts.sample_every_s;
-    sim.ReadContacts(slot, contacts);
+    rig.ReadContacts();
     BrushSample s;
-    s.u_m = sim.Qpos(qy) - y0;
+    s.u_m = rig.PlateY() - y0;
     for (int i = 0; i < N; ++i) {
       const GeomContact& c = contacts[i];
-      const double fn = c.force_world[0] * c.normal_world[0] + c.force_world[1] * c.normal_world[1] +
-                        c.force_world[2] * c.normal_world[2];
-      const double fty = c.force_world[1] - fn * c.normal_world[1];
-      const double ftz = c.force_world[2] - fn * c.normal_world[2];
+      const auto [fty, ftz] = TangentialYZ(c);
       samples[i] = {c.in_contact, c.slip_speed_m_s,
                     c.in_contact ? std::hypot(fty, ftz) / (mu * c.normal_N) : 0.0};
       if (!c.in_contact) continue;
@@ -134,34 +167,12 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
     throw InputError("dome check: skin.coupling = '" + spec.skin.coupling + "': needs the membrane-coupled lattice");
   }
   spec.max_depth_m = opts.depth_mm * 1e-3;
-  const CompiledModel model = CompiledModel::FromXml(BuildContactRig(spec));
-  Simulation sim(model);
-  const PinLattice lattice = PinLattice::Build(spec.skin);
+  PressedRig rig(spec, spec.max_depth_m);
+  const PinLattice& lattice = rig.lattice;
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
-  const int N = static_cast<int>(lattice.size());
-  std::vector<int> slot(model.ngeom(), -1);
-  for (int i = 0; i < N; ++i) {
-    try {
-      slot[model.GeomId(SkinNames::PinGeom(i))] = i;
-    } catch (const ModelError&) {
-      // culled pin: cannot reach the plate
-    }
-  }
-  const int servo_x = model.ActuatorId(ContactRigNames::kServoNormal);
-  const int servo_y = model.ActuatorId(ContactRigNames::kServoShear);
-  const int qy = model.JointQposAdr(model.JointId(ContactRigNames::kShear));
-  const double mu = spec.contact.friction, dt = model.timestep();
-  const double press = spec.gap_m + opts.depth_mm * 1e-3;
-  std::vector<GeomContact> contacts(N);
-  double t = 0.0;
-  auto step = [&](double x_target, double y_target) {
-    sim.SetControl(servo_x, -x_target);
-    sim.SetControl(servo_y, y_target);
-    sim.Step();
-    t += dt;
-  };
-  while (t < 1.3) step(press * Smooth(t / 1.0), 0.0);
-  sim.ReadContacts(slot, contacts);
+  const int N = rig.n;
+  const double mu = spec.contact.friction;
+  const std::vector<GeomContact>& contacts = rig.contacts;
   DomeCheck out;
   double sum_n = 0.0;
   for (const auto& c : contacts) {
@@ -175,25 +186,22 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   // Shear ramp until every contacting pin slides (or well past the Coulomb load).
   const double v = opts.shear_speed_mm_s * 1e-3;
   const double u_limit = 4.0 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
-  const double y0 = sim.Qpos(qy), t0 = t;
+  const double y0 = rig.PlateY(), t0 = rig.t;
   LabelConfig labels;
   std::vector<PinContactSample> samples(N);
   std::vector<std::uint8_t> pin_contact(N), pin_slip(N);
   std::vector<double> first_slip_q(N, std::nan(""));
   double next_sample = t0 + opts.sample_every_s;
   out.gross_q_ratio = std::nan("");
-  while (sim.Qpos(qy) - y0 < u_limit) {
-    step(press, v * (t - t0));
-    if (t < next_sample) continue;
+  while (rig.PlateY() - y0 < u_limit) {
+    rig.Step(v * (rig.t - t0));
+    if (rig.t < next_sample) continue;
     next_sample += opts.sample_every_s;
-    sim.ReadContacts(slot, contacts);
+    rig.ReadContacts();
     double q = 0.0, p = 0.0;
     for (int i = 0; i < N; ++i) {
       const GeomContact& c = contacts[i];
-      const double fn = c.force_world[0] * c.normal_world[0] + c.force_world[1] * c.normal_world[1] +
-                        c.force_world[2] * c.normal_world[2];
-      const double fty = c.force_world[1] - fn * c.normal_world[1];
-      const double ftz = c.force_world[2] - fn * c.normal_world[2];
+      const auto [fty, ftz] = TangentialYZ(c);
       samples[i] = {c.in_contact, c.slip_speed_m_s, c.in_contact ? std::hypot(fty, ftz) / (mu * c.normal_N) : 0.0};
       q += fty;
       p += c.normal_N;

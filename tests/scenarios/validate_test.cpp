@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "scenarios/rail.h"
 #include "scenarios/validate.h"
 
 namespace tactip {
@@ -36,19 +37,7 @@ TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
 // gross slip at Q = mu P; the stick region shrinks from the outside in).
 TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
   DomeCheckOptions o;
-  for (const auto& kv : SkinPreset("fingerprint-v2")) {
-    const auto eq = kv.find('=');
-    const std::string key = kv.substr(5, eq - 5), value = kv.substr(eq + 1);  // strip "skin."
-    if (key == "pattern") o.rig.skin.pattern = value;
-    if (key == "coupling") o.rig.skin.coupling = value;
-    if (key == "ridge_shape") o.rig.skin.ridge_shape = value;
-    if (key == "ridge_spacing_mm") o.rig.skin.ridge_spacing_mm = std::stod(value);
-    if (key == "ridge_height_mm") o.rig.skin.ridge_height_mm = std::stod(value);
-    if (key == "thickness_mm") o.rig.skin.thickness_mm = std::stod(value);
-    if (key == "pin_length_mm") o.rig.skin.pin_length_mm = std::stod(value);
-    if (key == "pins_per_ring") o.rig.skin.pins_per_ring = std::stoi(value);
-    if (key == "pattern_radius_mm") o.rig.skin.pattern_radius_mm = std::stod(value);
-  }
+  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPreset("fingerprint-v2")).skin;
   ASSERT_EQ(o.rig.skin.pattern, "fingerprint-v2");
   o.rig.sim.timestep_s = 0.001;
   const DomeCheck c = RunDomeCheck(o);
