@@ -92,6 +92,7 @@ std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
   }
   const std::filesystem::path dir(opts.out_dir);
   CheckWritableLocation((dir / "designs.csv").string());
+  if (opts.started) opts.started(designs.size());
 
   std::vector<SweepDesignResult> results;
   std::string runs_csv;

@@ -26,6 +26,8 @@ struct SweepOptions {
   std::string out_dir;                      ///< folder for designs.csv, runs.csv and the heatmaps
   IncipientParams detector;                 ///< incipient detector parameters (hardware defaults)
   const std::atomic<bool>* stop = nullptr;  ///< cooperative interruption
+  /// Called with the number of designs once every design is validated, before any runs.
+  std::function<void(size_t)> started;
 };
 
 /// Result of one design.

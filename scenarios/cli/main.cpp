@@ -322,10 +322,11 @@ int main(int argc, char** argv) {
       o.out_dir = out_path.empty() ? "sweep" : out_path;
       o.detector = sweep_detector;
       o.stop = &g_stop;
-      const auto designs = tactip::ExpandGrid(o.params);
       if (!quiet) {
-        std::fprintf(stderr, "sweeping %zu design(s) x %d run(s) of %s into %s/\n", designs.size(), sweep_runs,
-                     entry.name.c_str(), o.out_dir.c_str());
+        o.started = [&](size_t designs) {
+          std::fprintf(stderr, "sweeping %zu design(s) x %d run(s) of %s into %s/\n", designs, sweep_runs,
+                       entry.name.c_str(), o.out_dir.c_str());
+        };
       }
       const auto wall0 = std::chrono::steady_clock::now();
       const auto results = tactip::RunSweep(o, [&](int done, int total, const tactip::SweepDesignResult& r) {

@@ -80,6 +80,7 @@ TEST_F(SweepCliTest, InvalidDesignIsRejectedBeforeAnythingRuns) {
   const CliResult r = Run("sweep incipient --param skin.pin_length_mm=1,4 --runs 1 --out " + (dir_ / "bad").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("design skin.pin_length_mm=4"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "bad" / "designs.csv"));
   const CliResult k = Run("sweep incipient --param skin.nope=1,2 --runs 1 --out " + (dir_ / "bad").string());
   EXPECT_EQ(k.code, 2);
