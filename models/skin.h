@@ -120,6 +120,8 @@ struct ContactConfig {
   double friction = 1.0;            ///< static Coulomb coefficient skin-stimulus
   double kinetic_ratio = 0.6;       ///< kinetic / static friction coefficient
   double friction_jitter = 0.05;    ///< per-run relative perturbation of the friction (uniform +-)
+  double pin_friction_spread = 0.0; ///< per-pin relative perturbation of the friction (uniform +-)
+  double weakening_speed_mm_s = 0.0;///< velocity-weakening scale v_c (0 = switch at the slip tolerance)
   double timeconst_s = 0.004;       ///< contact softness time constant
   double impedance = 0.99;          ///< contact impedance d (solimp), closer to 1 = harder
 
@@ -137,6 +139,14 @@ struct ContactConfig {
     v("friction_jitter", friction_jitter, "",
       "Per-run variation: friction is drawn uniformly in friction * (1 +- jitter). 0 switches it off.",
       Bounds::RightOpen(0.0, 1.0));
+    v("pin_friction_spread", pin_friction_spread, "",
+      "Per-pin variation within a run (surface roughness, moulding): pin i's coefficients are scaled by "
+      "(1 + spread * u_i), u_i uniform in [-1, 1), drawn per run. 0 gives every pin the same friction.",
+      Bounds::RightOpen(0.0, 0.5));
+    v("weakening_speed_mm_s", weakening_speed_mm_s, "mm/s",
+      "Velocity weakening: a pin sliding at speed v has mu_k + (mu_s - mu_k) / (1 + v / v_c). 0 switches a pin "
+      "to mu_k as soon as it slides faster than labels.slip_speed_m_s.",
+      Bounds::Closed(0.0, 1000.0));
     v("timeconst_s", timeconst_s, "s",
       "MuJoCo contact time constant (solref). Must be >= 2 timesteps; with impedance 0.99 the contact "
       "is ~30x stiffer than a pin's gel spring, so the gel, not the solver, sets the indentation.",
@@ -146,6 +156,13 @@ struct ContactConfig {
       Bounds::Closed(0.5, 0.9999));
   }
   void ValidateRules() const {}
+  /// Velocity-weakened coefficient of a pin with static coefficient mu_s sliding at
+  /// slip_speed_m_s (needs weakening_speed_mm_s > 0): mu_s at rest, kinetic_ratio * mu_s
+  /// when fast, halfway at the weakening speed.
+  double WeakenedFriction(double mu_s, double slip_speed_m_s) const {
+    const double mu_k = kinetic_ratio * mu_s;
+    return mu_k + (mu_s - mu_k) / (1.0 + slip_speed_m_s / (weakening_speed_mm_s * 1e-3));
+  }
 };
 
 /// One pin of the lattice in the sensor frame (x = dome axis, outwards; z = up).

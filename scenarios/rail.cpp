@@ -190,13 +190,24 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   // This run's model: the shared one with this run's friction.
   CompiledModel model = im.model->Copy();
   // MuJoCo takes the larger of the two geoms' coefficients: the stimulus gets the
-  // kinetic value and each pin switches between static and kinetic as it sticks/slides.
+  // lowest kinetic value of any pin, and each pin's own coefficient moves between
+  // its static and kinetic values as it sticks and slides (switched at the slip
+  // tolerance, or continuously by velocity weakening).
   const double mu_k = mu * c.contact.kinetic_ratio;
-  model.SetGeomFriction(im.stimulus_geom, mu_k);
-  for (int g : im.pin_geom) {
-    if (g >= 0) model.SetGeomFriction(g, mu);
+  std::vector<double> mu_pin(N, mu), mu_k_pin(N, mu_k);
+  Rng pin_rng(DeriveSeed(run_seed, 3));
+  for (int i = 0; i < N; ++i) {
+    const double scale = 1.0 + c.contact.pin_friction_spread * pin_rng.Uniform(-1.0, 1.0);
+    mu_pin[i] = mu * scale;
+    mu_k_pin[i] = mu_k * scale;
+  }
+  model.SetGeomFriction(im.stimulus_geom, mu_k * (1.0 - c.contact.pin_friction_spread));
+  for (int i = 0; i < N; ++i) {
+    if (im.pin_geom[i] >= 0) model.SetGeomFriction(im.pin_geom[i], mu_pin[i]);
   }
   std::vector<std::uint8_t> sliding(N, 0);  // per pin: kinetic friction in force
+  std::vector<double> mu_cur = mu_pin;       // per pin: coefficient in force
+  const bool weakening = c.contact.weakening_speed_mm_s > 0.0;
   Simulation sim(model);
   sim.Forward();
 
@@ -257,24 +268,33 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
     const bool two_coefficients = c.contact.kinetic_ratio < 1.0;
     if (!frame_now && !seek_onset && !seek_prediction && !two_coefficients) continue;
     sim.ReadContacts(im.slot_of_geom, contacts);
-    double sum_normal = 0.0;
+    double holding_N = 0.0;  // sum of mu_s,i * N_i
     for (int i = 0; i < N; ++i) {
       const GeomContact& gc = contacts[i];
-      sum_normal += gc.normal_N;
+      holding_N += mu_pin[i] * gc.normal_N;
       const double fn = Dot(gc.force_world, gc.normal_world);
       for (int k = 0; k < 3; ++k) tangential[i][k] = gc.force_world[k] - fn * gc.normal_world[k];
       const double ft = std::sqrt(Dot(tangential[i], tangential[i]));
-      const double mu_now = sliding[i] ? mu_k : mu;
+      const double mu_now = mu_cur[i];
       samples[i] = {gc.in_contact, gc.slip_speed_m_s, gc.in_contact ? ft / (mu_now * gc.normal_N) : 0.0};
     }
     const FrameLabels fl = LabelFrame(samples, c.labels, pin_contact.data(), pin_slip.data());
-    if (two_coefficients) {
+    if (two_coefficients && weakening) {
+      // Velocity weakening from this step's slip speed.
+      for (int i = 0; i < N; ++i) {
+        if (im.pin_geom[i] < 0) continue;
+        const double v = samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0;
+        mu_cur[i] = c.contact.WeakenedFriction(mu_pin[i], v);
+        model.SetGeomFriction(im.pin_geom[i], mu_cur[i]);
+      }
+    } else if (two_coefficients) {
       // Static -> kinetic when a pin slides, back when it sticks (or leaves contact).
       for (int i = 0; i < N; ++i) {
         const bool now = pin_slip[i] || (sliding[i] && samples[i].in_contact &&
                                          samples[i].slip_speed_m_s > c.labels.slip_speed_m_s);
         if (now != static_cast<bool>(sliding[i]) && im.pin_geom[i] >= 0) {
-          model.SetGeomFriction(im.pin_geom[i], now ? mu_k : mu);
+          mu_cur[i] = now ? mu_k_pin[i] : mu_pin[i];
+          model.SetGeomFriction(im.pin_geom[i], mu_cur[i]);
           sliding[i] = now ? 1 : 0;
         }
       }
@@ -288,11 +308,11 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
     if (seek_onset && gross) sum.gross_slip_onset_s = t;
     if (seek_prediction) {
       // Coulomb prediction from the simulated normal forces: the holding margin
-      // mu * sum(N) + rail friction - m g crosses zero between two steps.
+      // sum(mu_i N_i) + rail friction - m g crosses zero between two steps.
       // The rail's static friction (either sign, up to F_rail) shares the load in a
       // statically undetermined way, so the skin may start sliding anywhere between
-      // mu sum(N) = m g + F_rail and mu sum(N) = m g - F_rail.
-      const double margin = mu * sum_normal + c.rail.friction_N - weight_N;
+      // sum(mu_i N_i) = m g + F_rail and sum(mu_i N_i) = m g - F_rail.
+      const double margin = holding_N + c.rail.friction_N - weight_N;
       const double skin_margin = margin - 2.0 * c.rail.friction_N;
       if (!std::isnan(prev_margin) && prev_margin >= 0.0 && margin < 0.0) {
         sum.predicted_onset_s = prev_t + (t - prev_t) * prev_margin / (prev_margin - margin);

@@ -17,7 +17,10 @@ RailScenarioConfig LoadIncipient(const ConfigSource& src) {
 }  // namespace
 
 RailScenarioConfig IncipientDefaults() {
-  std::vector<std::string> keys = {"rail.stimulus=acrylic", "external.enabled=true", "rail.retract_speed_mm_s=0.3"};
+  // The acrylic contact: per-pin friction variation and velocity weakening (README,
+  // "Contacts and friction"), which let partial slip spread before the grip fails.
+  std::vector<std::string> keys = {"rail.stimulus=acrylic", "external.enabled=true", "rail.retract_speed_mm_s=0.3",
+                                   "contact.pin_friction_spread=0.2", "contact.weakening_speed_mm_s=1", "rail.lift_speed_mm_s=5"};
   for (const auto& k : SkinPreset("fingerprint-v2")) keys.push_back(k);
   return LoadConfig<RailScenarioConfig>("", keys);
 }

@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "models/rail_rig.h"
 #include "sim/simulation.h"
@@ -18,6 +21,39 @@ TEST(SkinTest, DefaultsAreValid) {
   EXPECT_NO_THROW(ValidateConfig(s));
   ContactConfig c;
   EXPECT_NO_THROW(ValidateConfig(c));
+}
+
+TEST(ContactFrictionTest, VelocityWeakeningRunsFromStaticAtRestToKineticWhenFast) {
+  ContactConfig c;
+  c.kinetic_ratio = 0.6;
+  c.weakening_speed_mm_s = 2.0;
+  const double mu_s = 1.2, mu_k = 0.72;
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 0.0), mu_s, kTol);
+  // Halfway between the two coefficients at the weakening speed (2 mm/s).
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 2e-3), 0.5 * (mu_s + mu_k), kTol);
+  // Within 0.1 % of kinetic three decades above it.
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 2.0), mu_k, 1e-3 * mu_s);
+  double prev = mu_s;
+  for (double v = 1e-6; v < 1.0; v *= 1.5) {
+    const double mu = c.WeakenedFriction(mu_s, v);
+    EXPECT_LT(mu, prev) << "not decreasing at v = " << v;
+    EXPECT_GT(mu, mu_k);
+    prev = mu;
+  }
+}
+
+TEST(ContactFrictionTest, PerPinSpreadAndWeakeningSpeedAreRangeChecked) {
+  for (const auto& [key, fragment] : std::vector<std::pair<std::string, std::string>>{
+           {"pin_friction_spread=0.5", "pin_friction_spread = 0.5"},
+           {"pin_friction_spread=-0.1", "pin_friction_spread = -0.1"},
+           {"weakening_speed_mm_s=-1", "weakening_speed_mm_s = -1"}}) {
+    try {
+      LoadConfig<ContactConfig>("", {key});
+      ADD_FAILURE() << key << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SkinTest, LatticeHas127PinsInSevenHexRings) {
