@@ -63,6 +63,9 @@ struct DomeCheckOptions {
 struct DomeSample {
   double q_ratio = 0.0;   ///< Q / (mu P)
   double c_ratio = 0.0;   ///< stick radius over contact radius, sqrt(sticking / contacting pins)
+  /// The stick boundary as the lattice resolves it, over the fitted contact radius a:
+  /// c_lo = outermost sticking pin, c_hi = innermost slipping pin (inf if none slips).
+  double c_lo = 0.0, c_hi = 0.0;
   int sticking = 0;
   int contacting = 0;
 };
@@ -76,7 +79,11 @@ struct DomeCheck {
   /// Fraction of samples with 0.1 <= Q/muP <= 0.9 whose c/a lies between the
   /// Cattaneo-Mindlin (1 - q)^(1/3) and brush (1 - q)^(1/4) curves (within tolerance).
   double between_fraction = 0.0;
+  /// Fraction of the same samples whose resolved stick boundary [c_lo, c_hi] reaches the
+  /// band between the two curves (within tolerance).
+  double bracket_fraction = 0.0;
   int samples_judged = 0;
+  double contact_radius_mm = 0.0;  ///< a: where the fitted parabolic pressure N = alpha - beta r^2 reaches 0
   /// Spearman rank correlation between each pin's distance from the axis and the load at
   /// which it first slips, negated: +1 = the stick region shrinks strictly outside-in.
   double outside_in_correlation = 0.0;

@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
       const tactip::DomeCheck dc = tactip::RunDomeCheck(d);
       constexpr double kBetween = 0.9, kGross = 0.03;
       std::printf("%s", tactip::FormatDomeCheck(dc, kBetween, kGross).c_str());
-      ok = ok && std::abs(dc.gross_q_ratio - 1.0) <= kGross && dc.between_fraction >= kBetween &&
+      ok = ok && std::abs(dc.gross_q_ratio - 1.0) <= kGross && dc.bracket_fraction >= kBetween &&
            dc.outside_in_correlation >= 0.9;
       if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
       return ok ? 0 : 1;

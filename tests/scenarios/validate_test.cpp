@@ -53,10 +53,33 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
     prev = s.sticking;
   }
   EXPECT_EQ(c.samples.back().sticking, 0);
+  // The fitted contact radius lies beyond the outermost contacting ring (9 mm at 3 mm
+  // spacing) and short of the next (12 mm); the resolved stick boundary is a disc.
+  EXPECT_GT(c.contact_radius_mm, 9.0);
+  EXPECT_LT(c.contact_radius_mm, 12.0);
+  for (const DomeSample& s : c.samples) EXPECT_LE(s.c_lo, s.c_hi + 1e-9) << "at Q/muP = " << s.q_ratio;
+  EXPECT_GT(c.bracket_fraction, 0.0);
+  EXPECT_LE(c.bracket_fraction, 1.0);
   // A membrane check needs the membrane lattice.
   DomeCheckOptions rigid = o;
   rigid.rig.skin.coupling = "shell";
   EXPECT_THROW(RunDomeCheck(rigid), InputError);
+}
+
+// Membrane coupling grows with skin thickness; a strongly coupled lattice releases each
+// ring before Cattaneo-Mindlin does, a weakly coupled one stays between CM and the brush.
+TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {
+  DomeCheckOptions o;
+  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPreset("fingerprint-v2")).skin;
+  o.rig.sim.timestep_s = 0.001;
+  o.shear_speed_mm_s = 0.3;
+  o.rig.skin.thickness_mm = 0.3;
+  const DomeCheck thin = RunDomeCheck(o);
+  o.rig.skin.thickness_mm = 1.0;
+  const DomeCheck thick = RunDomeCheck(o);
+  EXPECT_NEAR(thin.gross_q_ratio, 1.0, 0.03);
+  EXPECT_GE(thin.bracket_fraction, 0.9);
+  EXPECT_GT(thin.bracket_fraction, thick.bracket_fraction + 0.1);
 }
 
 TEST(BrushModelTest, SpearmanHandlesTiesAndDirection) {
