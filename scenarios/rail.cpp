@@ -194,13 +194,9 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
   // its static and kinetic values as it sticks and slides (switched at the slip
   // tolerance, or continuously by velocity weakening).
   const double mu_k = mu * c.contact.kinetic_ratio;
-  std::vector<double> mu_pin(N, mu), mu_k_pin(N, mu_k);
+  std::vector<double> mu_pin(N, mu);  // per pin: static coefficient
   Rng pin_rng(DeriveSeed(run_seed, 3));
-  for (int i = 0; i < N; ++i) {
-    const double scale = 1.0 + c.contact.pin_friction_spread * pin_rng.Uniform(-1.0, 1.0);
-    mu_pin[i] = mu * scale;
-    mu_k_pin[i] = mu_k * scale;
-  }
+  for (double& m : mu_pin) m *= 1.0 + c.contact.pin_friction_spread * pin_rng.Uniform(-1.0, 1.0);
   model.SetGeomFriction(im.stimulus_geom, mu_k * (1.0 - c.contact.pin_friction_spread));
   for (int i = 0; i < N; ++i) {
     if (im.pin_geom[i] >= 0) model.SetGeomFriction(im.pin_geom[i], mu_pin[i]);
@@ -279,24 +275,21 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec,
       samples[i] = {gc.in_contact, gc.slip_speed_m_s, gc.in_contact ? ft / (mu_now * gc.normal_N) : 0.0};
     }
     const FrameLabels fl = LabelFrame(samples, c.labels, pin_contact.data(), pin_slip.data());
-    if (two_coefficients && weakening) {
-      // Velocity weakening from this step's slip speed.
+    if (two_coefficients) {
       for (int i = 0; i < N; ++i) {
         if (im.pin_geom[i] < 0) continue;
-        const double v = samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0;
-        mu_cur[i] = c.contact.WeakenedFriction(mu_pin[i], v);
-        model.SetGeomFriction(im.pin_geom[i], mu_cur[i]);
-      }
-    } else if (two_coefficients) {
-      // Static -> kinetic when a pin slides, back when it sticks (or leaves contact).
-      for (int i = 0; i < N; ++i) {
-        const bool now = pin_slip[i] || (sliding[i] && samples[i].in_contact &&
-                                         samples[i].slip_speed_m_s > c.labels.slip_speed_m_s);
-        if (now != static_cast<bool>(sliding[i]) && im.pin_geom[i] >= 0) {
-          mu_cur[i] = now ? mu_k_pin[i] : mu_pin[i];
-          model.SetGeomFriction(im.pin_geom[i], mu_cur[i]);
+        if (weakening) {
+          // Velocity weakening from this step's slip speed.
+          mu_cur[i] = c.contact.WeakenedFriction(mu_pin[i], samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0);
+        } else {
+          // Static -> kinetic when a pin slides, back when it sticks (or leaves contact).
+          const bool now = pin_slip[i] || (sliding[i] && samples[i].in_contact &&
+                                           samples[i].slip_speed_m_s > c.labels.slip_speed_m_s);
+          if (now == static_cast<bool>(sliding[i])) continue;
           sliding[i] = now ? 1 : 0;
+          mu_cur[i] = now ? c.contact.kinetic_ratio * mu_pin[i] : mu_pin[i];
         }
+        model.SetGeomFriction(im.pin_geom[i], mu_cur[i]);
       }
     }
     // Gross slip: every contacting pin slides and the object moves along the rail

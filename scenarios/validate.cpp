@@ -239,12 +239,10 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
       if (!pin_contact[i]) continue;
       if (pin_slip[i]) {
         s.c_hi = std::min(s.c_hi, r_pin[i] / a_m);
+        if (std::isnan(first_slip_q[i])) first_slip_q[i] = s.q_ratio;
       } else {
         s.c_lo = std::max(s.c_lo, r_pin[i] / a_m);
       }
-    }
-    for (int i = 0; i < N; ++i) {
-      if (pin_contact[i] && pin_slip[i] && std::isnan(first_slip_q[i])) first_slip_q[i] = s.q_ratio;
     }
     out.samples.push_back(s);
     if (fl.gross_slip) {

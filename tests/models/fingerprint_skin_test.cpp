@@ -16,6 +16,7 @@
 #include "models/skin.h"
 #include "sim/sim_config.h"
 #include "sim/simulation.h"
+#include "input_error.h"
 
 namespace tactip {
 namespace {
@@ -31,17 +32,6 @@ SkinConfig PresetSkin(const std::string& name) {
   }
   ValidateConfig(s);
   return s;
-}
-
-/// Message of the InputError thrown by `f` ("" if none was thrown).
-template <class F>
-std::string InputErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 /// Neighbour count of every pin.

@@ -24,6 +24,7 @@
 #include "scenarios/registry.h"
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
+#include "input_error.h"
 
 namespace tactip {
 namespace {
@@ -93,17 +94,6 @@ double Attr(const RunRecord& r, const std::string& key) {
   const auto it = r.attrs.find(key);
   EXPECT_NE(it, r.attrs.end()) << "missing run attribute " << key;
   return it == r.attrs.end() ? std::nan("") : it->second;
-}
-
-/// Message of the InputError thrown by `f` ("" if none was thrown).
-template <class F>
-std::string InputErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 // ---- Configuration ----------------------------------------------------------------------

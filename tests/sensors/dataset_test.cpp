@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "sim/config.h"
+#include "input_error.h"
 
 namespace tactip {
 namespace {
@@ -98,17 +99,6 @@ void WriteDataset(const std::string& path, const std::vector<RunRecord>& runs, c
 std::string Slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-/// Message of the InputError thrown by `f` ("" if none was thrown).
-template <class F>
-std::string InputErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(DatasetNameTest, RunGroupNamePadsToFourDigits) {
