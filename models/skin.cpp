@@ -322,10 +322,12 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
         .Set("stiffness", n * mech.k_shear_N_m)
         .Set("damping", mech.shell_damping_Ns_m);
   }
-  // In a membrane lattice, pins that cannot touch anything carry no DOFs: the skin
-  // beyond the contact anchors its neighbours through the coupling springs.
-  std::vector<bool> moving(lattice.size(), true);
-  if (membrane) moving = collidable;
+  // In a membrane lattice, pins that cannot touch anything keep their two shear DOFs but
+  // no normal DOF: the skin beyond the contact rests on the gel and is dragged along by
+  // the membrane (its coupling length spans several rings), while its normal motion is
+  // not loaded by anything.
+  std::vector<bool> normal_dof(lattice.size(), true);
+  if (membrane) normal_dof = collidable;
   // One body per pin: a normal slide joint on its gel column, a spherical contact
   // patch whose outer surface lies on the contact surface, and sites at both ends.
   for (const auto& pin : lattice.pins) {
@@ -336,7 +338,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     b.Set("name", SkinNames::PinBody(i)).Set("pos", std::vector<double>{rb * nrm[0], rb * nrm[1], rb * nrm[2]});
     b.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.pin_mass_kg)
         .Set("diaginertia", std::vector<double>{1e-9, 1e-9, 1e-9});
-    if (moving[i]) {
+    if (normal_dof[i]) {
       b.Add("joint")
           .Set("name", SkinNames::PinJoint(i))
           .Set("type", "slide")
@@ -344,7 +346,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
           .Set("stiffness", mech.k_normal_N_m)
           .Set("damping", c_normal);
     }
-    if (!shell_mode && moving[i]) {
+    if (!shell_mode) {
       // The pin's own shear springs: gel column (in series with its ridge).
       for (char axis : {'y', 'z'}) {
         b.Add("joint")
@@ -389,13 +391,13 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   // the membrane (through the ridges) couples their shear motion.
   if (skin.coupling != "none") {
     for (const auto& e : lattice.neighbours) {
-      const bool m0 = moving[e[0]], m1 = moving[e[1]];
+      const bool m0 = normal_dof[e[0]], m1 = normal_dof[e[1]];
       spring(fmt::format("bend_{}_{}", e[0], e[1]), SkinNames::PinJoint(e[0]), m0, SkinNames::PinJoint(e[1]), m1,
              mech.k_bend_N_m);
       if (!membrane) continue;
       for (char axis : {'y', 'z'}) {
-        spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), SkinNames::PinShearJoint(e[0], axis), m0,
-               SkinNames::PinShearJoint(e[1], axis), m1, mech.k_couple_N_m);
+        spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), SkinNames::PinShearJoint(e[0], axis), true,
+               SkinNames::PinShearJoint(e[1], axis), true, mech.k_couple_N_m);
       }
     }
   }

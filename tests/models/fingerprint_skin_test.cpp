@@ -285,7 +285,9 @@ std::map<int, const mjcf::Element*> PinBodies(const SkinPart& part) {
   return out;
 }
 
-TEST(FingerprintSkinPartTest, MembraneLatticeGivesDofsOnlyToCollidablePins) {
+// Every pin of a membrane lattice shears on the gel (the skin beyond the contact is
+// dragged along by the membrane); only pins that can touch the plate move normally.
+TEST(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormalDofsToCollidablePins) {
   const SkinConfig v2 = PresetSkin("fingerprint-v2");
   const PinLattice lat = PinLattice::Build(v2);
   RailConfig rail;
@@ -311,24 +313,22 @@ TEST(FingerprintSkinPartTest, MembraneLatticeGivesDofsOnlyToCollidablePins) {
       if (c.tag() == "site") ++sites;
     }
     EXPECT_EQ(sites, 2) << "pin " << i << ": inner marker and outer contact point";
+    const std::vector<std::string> shear{SkinNames::PinShearJoint(i, 'y'), SkinNames::PinShearJoint(i, 'z')};
     if (coll[i]) {
       EXPECT_EQ(geoms, 1) << "pin " << i;
-      EXPECT_EQ(joints, (std::vector<std::string>{SkinNames::PinJoint(i), SkinNames::PinShearJoint(i, 'y'),
-                                                  SkinNames::PinShearJoint(i, 'z')}))
-          << "pin " << i;
-      for (const auto& c : body->children()) {
-        if (c.tag() != "joint" || c.Get("name") == SkinNames::PinJoint(i)) continue;
-        EXPECT_DOUBLE_EQ(std::stod(c.Get("stiffness")), m.k_tip_N_m) << c.Get("name");
-        EXPECT_DOUBLE_EQ(std::stod(c.Get("damping")), m.TipDamping(dt)) << c.Get("name");
-      }
-      moving_joints.insert(joints.begin(), joints.end());
+      EXPECT_EQ(joints, (std::vector<std::string>{SkinNames::PinJoint(i), shear[0], shear[1]})) << "pin " << i;
     } else {
       EXPECT_EQ(geoms, 0) << "pin " << i;
-      EXPECT_TRUE(joints.empty()) << "non-collidable pin " << i << " has " << joints.size() << " joints";
+      EXPECT_EQ(joints, shear) << "non-collidable pin " << i;
     }
+    for (const auto& c : body->children()) {
+      if (c.tag() != "joint" || c.Get("name") == SkinNames::PinJoint(i)) continue;
+      EXPECT_DOUBLE_EQ(std::stod(c.Get("stiffness")), m.k_tip_N_m) << c.Get("name");
+      EXPECT_DOUBLE_EQ(std::stod(c.Get("damping")), m.TipDamping(dt)) << c.Get("name");
+    }
+    moving_joints.insert(joints.begin(), joints.end());
   }
-  // Tendons: bending and membrane springs on every edge with at least one moving end,
-  // each listing only joints that exist.
+  // Tendons list only joints that exist.
   int membrane = 0, bend = 0;
   for (const auto& t : part.tendons) {
     const std::string name = t.Get("name");
@@ -345,9 +345,10 @@ TEST(FingerprintSkinPartTest, MembraneLatticeGivesDofsOnlyToCollidablePins) {
       EXPECT_EQ(moving_joints.count(j.Get("joint")), 1u) << name << " references " << j.Get("joint");
     }
   }
+  // Membrane springs on every edge; bending springs where at least one end moves normally.
   int live_edges = 0;
   for (const auto& e : lat.neighbours) live_edges += (coll[e[0]] || coll[e[1]]) ? 1 : 0;
-  EXPECT_EQ(membrane, 2 * live_edges);
+  EXPECT_EQ(membrane, 2 * static_cast<int>(lat.neighbours.size()));
   EXPECT_EQ(bend, live_edges);
 }
 
@@ -366,7 +367,7 @@ TEST(FingerprintSkinPartTest, ShellCouplingKeepsDofsOnEveryPinAndHasNoMembraneSp
   for (const auto& t : part.tendons) EXPECT_EQ(t.Get("name").rfind("membrane_", 0), std::string::npos);
 }
 
-TEST(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithThreeDofsPerCollidablePin) {
+TEST(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithAFullShearLatticeAndNormalDofsPerCollidablePin) {
   for (const char* name : {"fingerprint-v1", "fingerprint-v2"}) {
     SCOPED_TRACE(name);
     RailSceneSpec spec;
@@ -378,25 +379,26 @@ TEST(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithThreeDofsPerCollid
     ASSERT_LT(scene.n_collidable, scene.n_pins);
     EXPECT_NE(scene.xml.find("name=\"membrane_"), std::string::npos);
     const CompiledModel m = CompiledModel::FromXml(scene.xml);
-    // Rig: arm x, arm z, rail slide; skin: normal + two shear DOFs per collidable pin.
-    EXPECT_EQ(m.nv(), 3 + 3 * scene.n_collidable);
+    // Rig: arm x, arm z, rail slide; skin: two shear DOFs per pin, a normal DOF per collidable pin.
+    EXPECT_EQ(m.nv(), 3 + 2 * scene.n_pins + scene.n_collidable);
     const PinLattice lat = PinLattice::Build(spec.skin);
     const auto coll = RailCollidablePins(spec.skin, lat, spec.rail, spec.max_depth_m);
     for (size_t i = 0; i < lat.size(); ++i) {
       const int pin = static_cast<int>(i);
       EXPECT_NO_THROW(m.SiteId(SkinNames::PinSite(pin)));
       EXPECT_NO_THROW(m.SiteId(SkinNames::PinOuterSite(pin)));
+      EXPECT_NO_THROW(m.JointId(SkinNames::PinShearJoint(pin, 'z'))) << "pin " << i;
       if (coll[i]) {
-        EXPECT_NO_THROW(m.JointId(SkinNames::PinShearJoint(pin, 'z'))) << "pin " << i;
+        EXPECT_NO_THROW(m.JointId(SkinNames::PinJoint(pin))) << "pin " << i;
       } else {
         EXPECT_THROW(m.JointId(SkinNames::PinJoint(pin)), ModelError) << "pin " << i;
       }
     }
-    // A deeper press reaches more pins and adds exactly three DOFs for each.
+    // A deeper press reaches more pins and adds exactly one (normal) DOF for each.
     spec.max_depth_m = 6.5e-3;
     const BuiltScene deeper = BuildRailScene(spec);
     ASSERT_GT(deeper.n_collidable, scene.n_collidable);
-    EXPECT_EQ(CompiledModel::FromXml(deeper.xml).nv(), 3 + 3 * deeper.n_collidable);
+    EXPECT_EQ(CompiledModel::FromXml(deeper.xml).nv(), 3 + 2 * deeper.n_pins + deeper.n_collidable);
   }
 }
 
