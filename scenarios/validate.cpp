@@ -204,6 +204,17 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   if (!(slope < 0.0) || !(icpt > 0.0)) throw SimulationError("dome check: the pressure does not fall off from the apex");
   const double a_m = std::sqrt(-icpt / slope);
   out.contact_radius_mm = a_m * 1e3;
+  // Coupling length: with edges of every direction, sum_e k (l_e . grad u)^2 averages to
+  // (1/2) sum_e k l_e^2 |grad u|^2 over the lattice's area, against sum_i k_tip u^2.
+  double edge_sum = 0.0;
+  for (const auto& e : lattice.neighbours) {
+    const auto& p = lattice.pins[e[0]].normal;
+    const auto& q = lattice.pins[e[1]].normal;
+    const double l = r_out * std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                       (p[2] - q[2]) * (p[2] - q[2]));
+    edge_sum += mech.k_couple_N_m * l * l;
+  }
+  out.coupling_length_mm = 1e3 * std::sqrt(edge_sum / (2.0 * N * mech.k_tip_N_m));
 
   // Shear ramp until every contacting pin slides (or well past the Coulomb load).
   const double v = opts.shear_speed_mm_s * 1e-3;
@@ -279,7 +290,9 @@ std::string FormatDomeCheck(const DomeCheck& c, double between_required, double 
   std::string out = fmt::format("dome under rising tangential load (membrane-coupled lattice, {} pins in contact, "
                                 "mu P = {:.4f} N)\n",
                                 c.pins_in_contact, c.mu_P_N);
-  out += fmt::format("  contact radius a = {:.2f} mm (fitted parabolic pressure)\n", c.contact_radius_mm);
+  out += fmt::format("  contact radius a = {:.2f} mm (fitted parabolic pressure); membrane coupling length lambda = "
+                     "{:.2f} mm = {:.2f} a\n",
+                     c.contact_radius_mm, c.coupling_length_mm, c.coupling_length_mm / c.contact_radius_mm);
   out += fmt::format("  {:>8} {:>8} {:>15} {:>10} {:>10} {:>9}\n", "Q/muP", "c/a_sim", "c/a_resolved", "c/a_CM",
                      "c/a_brush", "stick/in");
   const size_t stride = std::max<size_t>(1, c.samples.size() / 12);

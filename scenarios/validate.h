@@ -84,6 +84,10 @@ struct DomeCheck {
   double bracket_fraction = 0.0;
   int samples_judged = 0;
   double contact_radius_mm = 0.0;  ///< a: where the fitted parabolic pressure N = alpha - beta r^2 reaches 0
+  /// Membrane coupling length of the lattice, lambda = sqrt(sum_e k_couple l_e^2 / (2 sum_i k_tip)):
+  /// the distance over which the membrane spreads a pin's tangential load on the gel (the
+  /// continuum of the lattice is k u - T lap u = tau with lambda^2 = T / k; 0 = brush model).
+  double coupling_length_mm = 0.0;
   /// Spearman rank correlation between each pin's distance from the axis and the load at
   /// which it first slips, negated: +1 = the stick region shrinks strictly outside-in.
   double outside_in_correlation = 0.0;

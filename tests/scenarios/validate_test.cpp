@@ -80,6 +80,15 @@ TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {
   EXPECT_NEAR(thin.gross_q_ratio, 1.0, 0.03);
   EXPECT_GE(thin.bracket_fraction, 0.9);
   EXPECT_GT(thin.bracket_fraction, thick.bracket_fraction + 0.1);
+  // Same lattice, so the coupling lengths scale as sqrt(k_couple / k_tip).
+  const PinLattice lattice = PinLattice::Build(o.rig.skin);
+  const SkinMechanics m_thick = SkinMechanics::From(o.rig.skin, lattice);
+  o.rig.skin.thickness_mm = 0.3;
+  const SkinMechanics m_thin = SkinMechanics::From(o.rig.skin, lattice);
+  ASSERT_GT(thin.coupling_length_mm, 0.0);
+  EXPECT_NEAR(thick.coupling_length_mm / thin.coupling_length_mm,
+              std::sqrt((m_thick.k_couple_N_m / m_thick.k_tip_N_m) / (m_thin.k_couple_N_m / m_thin.k_tip_N_m)), 1e-9);
+  EXPECT_GT(thick.coupling_length_mm, thick.contact_radius_mm) << "v2's 1 mm membrane couples beyond the contact";
 }
 
 TEST(BrushModelTest, SpearmanHandlesTiesAndDirection) {
