@@ -210,8 +210,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   for (const auto& e : lattice.neighbours) {
     const auto& p = lattice.pins[e[0]].normal;
     const auto& q = lattice.pins[e[1]].normal;
-    const double l = r_out * std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                                       (p[2] - q[2]) * (p[2] - q[2]));
+    const double l = r_out * std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
     edge_sum += mech.k_couple_N_m * l * l;
   }
   out.coupling_length_mm = 1e3 * std::sqrt(edge_sum / (2.0 * N * mech.k_tip_N_m));
