@@ -2,6 +2,8 @@
 // Checks of the simulated contact against analytic anchors (physics.md), run by
 // `tactip validate contact` and by the tests.
 
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -70,6 +72,14 @@ struct DomeSample {
   int contacting = 0;
 };
 
+/// One ring of contacting pins in the dome check: the loads at which its pins slip.
+struct DomeRing {
+  double r_over_a = 0.0;  ///< distance from the axis over the fitted contact radius
+  int pins = 0;
+  double sim_q_lo = std::numeric_limits<double>::infinity(), sim_q_hi = -std::numeric_limits<double>::infinity();
+  double exact_q_lo = std::numeric_limits<double>::infinity(), exact_q_hi = -std::numeric_limits<double>::infinity();
+};
+
 /// Result of the dome check.
 struct DomeCheck {
   std::vector<DomeSample> samples;
@@ -91,7 +101,35 @@ struct DomeCheck {
   /// Spearman rank correlation between each pin's distance from the axis and the load at
   /// which it first slips, negated: +1 = the stick region shrinks strictly outside-in.
   double outside_in_correlation = 0.0;
+  /// The same lattice solved exactly (SolveQuasiStaticShear with the press's normal loads):
+  /// the fraction of its stick boundaries, sampled alike, that reach the band ...
+  double qs_bracket_fraction = 0.0;
+  /// ... and how far each pin's simulated release load is from the exact one, in Q / (mu P).
+  double release_error_mean = 0.0, release_error_max = 0.0;
+  int release_pins_compared = 0;
+  std::vector<DomeRing> rings;  ///< outermost first
 };
+
+/// Exact quasi-static Coulomb solution of a membrane-coupled lattice sheared by a rigid
+/// flat plate along one in-plane axis. The shear DOFs of the lattice are world-aligned, so
+/// the loaded component decouples: stiffness K = k_tip I + k_couple L (L the graph
+/// Laplacian of the lattice edges). A sticking pin moves with the plate (u_i = delta), a
+/// slipping pin carries mu N_i, a pin out of contact carries nothing; the normal loads stay
+/// those of the press (a flat plate's contact normal does not turn with shear). The stuck set
+/// only loses pins as delta grows, and between two releases every force is affine in delta,
+/// so the releases are found exactly, one event at a time.
+struct QuasiStaticShear {
+  std::vector<double> release_q;   ///< per pin: Q / (mu P) at which it slips (NaN: not in contact)
+  std::vector<double> release_delta_m;  ///< per pin: plate displacement at which it slips
+  double gross_delta_m = 0.0;      ///< plate displacement at which the last pin slips
+  /// Q / (mu P) and the stuck set on a uniform grid of plate displacement up to gross slip
+  /// (the dome check's ramp samples at constant speed, so the two sample alike).
+  std::vector<double> grid_q;
+  std::vector<std::vector<std::uint8_t>> grid_stuck;
+};
+QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
+                                       const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
+                                       double mu, int grid_points);
 
 /// Presses a membrane-coupled lattice onto a flat plate and shears the plate slowly to
 /// gross slip (single-coefficient Coulomb friction), comparing the stick region with
