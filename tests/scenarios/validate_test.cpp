@@ -4,9 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
 
 #include "scenarios/rail.h"
 #include "scenarios/validate.h"
+#include "sim/simulation.h"
 
 namespace tactip {
 namespace {
@@ -60,6 +64,17 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
   for (const DomeSample& s : c.samples) EXPECT_LE(s.c_lo, s.c_hi + 1e-9) << "at Q/muP = " << s.q_ratio;
   EXPECT_GT(c.bracket_fraction, 0.0);
   EXPECT_LE(c.bracket_fraction, 1.0);
+  // Every contacting pin slips within 0.01 mu P of the lattice's exact quasi-static
+  // release, ring by ring from the outside in, and the exact stick boundary meets the
+  // band about as often as the simulated one.
+  EXPECT_EQ(c.release_pins_compared, c.pins_in_contact);
+  EXPECT_LE(c.release_error_max, 0.01);
+  ASSERT_GE(c.rings.size(), 3u);
+  for (size_t k = 1; k < c.rings.size(); ++k) {
+    EXPECT_LT(c.rings[k].r_over_a, c.rings[k - 1].r_over_a);
+    EXPECT_GT(c.rings[k].exact_q_lo, c.rings[k - 1].exact_q_hi) << "ring " << k;
+  }
+  EXPECT_NEAR(c.qs_bracket_fraction, c.bracket_fraction, 0.03);
   // A membrane check needs the membrane lattice.
   DomeCheckOptions rigid = o;
   rigid.rig.skin.coupling = "shell";
@@ -89,6 +104,60 @@ TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {
   EXPECT_NEAR(thick.coupling_length_mm / thin.coupling_length_mm,
               std::sqrt((m_thick.k_couple_N_m / m_thick.k_tip_N_m) / (m_thin.k_couple_N_m / m_thin.k_tip_N_m)), 1e-9);
   EXPECT_GT(thick.coupling_length_mm, thick.contact_radius_mm) << "v2's 1 mm membrane couples beyond the contact";
+}
+
+// The exact quasi-static solver on lattices solved by hand.
+PinLattice Chain(int n) {
+  PinLattice lat;
+  lat.pins.resize(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) lat.pins[static_cast<size_t>(i)].index = i;
+  for (int i = 0; i + 1 < n; ++i) lat.neighbours.push_back({i, i + 1});
+  return lat;
+}
+
+TEST(QuasiStaticShearTest, UncoupledPinsReleaseAsTheBrushModelSays) {
+  // No membrane: pin i slips at k delta = mu N_i, when Q = sum_j min(k delta, mu N_j).
+  const double k = 20.0, mu = 0.8;
+  const std::vector<double> N = {0.5, 0.2, 0.9, 0.0, 0.35};
+  const std::vector<std::uint8_t> in = {1, 1, 1, 0, 1};
+  const QuasiStaticShear qs = SolveQuasiStaticShear(Chain(5), k, 0.0, N, in, mu, 101);
+  double mu_P = 0.0;
+  for (size_t i = 0; i < N.size(); ++i) mu_P += in[i] ? mu * N[i] : 0.0;
+  for (size_t i = 0; i < N.size(); ++i) {
+    if (!in[i]) {
+      EXPECT_TRUE(std::isnan(qs.release_q[i]));
+      continue;
+    }
+    const double d = mu * N[i] / k;
+    EXPECT_NEAR(qs.release_delta_m[i], d, 1e-12);
+    double q = 0.0;
+    for (size_t j = 0; j < N.size(); ++j) q += in[j] ? std::min(k * d, mu * N[j]) : 0.0;
+    EXPECT_NEAR(qs.release_q[i], q / mu_P, 1e-12);
+  }
+  EXPECT_NEAR(qs.gross_delta_m, mu * 0.9 / k, 1e-12);
+  ASSERT_EQ(qs.grid_q.size(), 101u);
+  EXPECT_NEAR(qs.grid_q.front(), 0.0, 1e-12);
+  EXPECT_NEAR(qs.grid_q.back(), 1.0, 1e-12);
+  for (size_t g = 1; g < qs.grid_q.size(); ++g) EXPECT_GE(qs.grid_q[g], qs.grid_q[g - 1] - 1e-12);
+}
+
+TEST(QuasiStaticShearTest, CoupledPairHandsTheSlippingPinsLagToItsNeighbour) {
+  // Two pins joined by a membrane spring kc, both stuck: no stretch, so pin 0 (N0 < N1)
+  // slips at d0 = mu N0 / k. Then pin 0 carries mu N0 at u0 = (mu N0 + kc d) / (k + kc),
+  // and pin 1 carries k d + kc (d - u0) until that reaches mu N1.
+  const double k = 10.0, kc = 40.0, mu = 1.0, N0 = 0.3, N1 = 0.6;
+  const QuasiStaticShear qs = SolveQuasiStaticShear(Chain(2), k, kc, {N0, N1}, {1, 1}, mu, 0);
+  const double d0 = mu * N0 / k;
+  EXPECT_NEAR(qs.release_delta_m[0], d0, 1e-12);
+  EXPECT_NEAR(qs.release_q[0], 2.0 * k * d0 / (mu * (N0 + N1)), 1e-12);
+  // mu N1 = k d + kc d - kc (mu N0 + kc d) / (k + kc)  =>  solve for d.
+  const double d1 = (mu * N1 + kc * mu * N0 / (k + kc)) / (k + kc - kc * kc / (k + kc));
+  EXPECT_NEAR(qs.release_delta_m[1], d1, 1e-12);
+  EXPECT_NEAR(qs.release_q[1], 1.0, 1e-12);
+  EXPECT_LT(d1, mu * N1 / k) << "the membrane loads pin 1 early";
+  EXPECT_TRUE(qs.grid_q.empty());
+  EXPECT_THROW(SolveQuasiStaticShear(Chain(2), k, kc, {N0}, {1, 1}, mu, 0), std::invalid_argument);
+  EXPECT_THROW(SolveQuasiStaticShear(Chain(2), k, kc, {N0, N1}, {0, 0}, mu, 0), SimulationError);
 }
 
 TEST(BrushModelTest, SpearmanHandlesTiesAndDirection) {
