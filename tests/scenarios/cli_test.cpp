@@ -104,6 +104,8 @@ TEST_F(CliTest, BadInputGetsOneLineAndExitCode2) {
       {"bench --runs 3", "--runs"},
       {"info " + P("missing.h5"), "missing.h5"},
       {"info " + P("text.h5"), "not an HDF5 file"},
+      {"validate contact --set skin.thicknes=1", "unknown config key 'skin.thicknes'"},
+      {"validate contact --set skin.thickness_mm=9", "skin.thickness_mm = 9: must be <= 5"},
   };
   for (const auto& c : cases) {
     const bool gen = c.args.rfind("generate", 0) == 0 || c.args.rfind("bench", 0) == 0;
