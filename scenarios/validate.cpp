@@ -253,6 +253,8 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
     size_t k = 0;
     for (int g = 0; g < grid_points; ++g) {
       const double d = delta * g / (grid_points - 1);
+      // At a release the later segment's stuck set holds (Q is continuous there); the last
+      // point, at gross slip, keeps the last pin stuck.
       while (k + 1 < segments.size() && d >= segments[k + 1].delta0) ++k;
       out.grid_q.push_back((segments[k].q0 + segments[k].q1 * d) / mu_P);
       out.grid_stuck.push_back(segments[k].stuck);
@@ -261,11 +263,15 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
   return out;
 }
 
+void CheckDomeSkin(const SkinConfig& skin) {
+  if (skin.coupling != "membrane") {
+    throw InputError("dome check: skin.coupling = '" + skin.coupling + "': needs the membrane-coupled lattice");
+  }
+}
+
 DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   ContactRigSpec spec = opts.rig;
-  if (spec.skin.coupling != "membrane") {
-    throw InputError("dome check: skin.coupling = '" + spec.skin.coupling + "': needs the membrane-coupled lattice");
-  }
+  CheckDomeSkin(spec.skin);
   spec.max_depth_m = opts.depth_mm * 1e-3;
   PressedRig rig(spec, spec.max_depth_m);
   const PinLattice& lattice = rig.lattice;
@@ -409,10 +415,9 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   std::vector<int> by_radius(N);
   for (int i = 0; i < N; ++i) by_radius[i] = i;
   std::sort(by_radius.begin(), by_radius.end(), [&](int p, int q) { return r_pin[p] > r_pin[q]; });
-  constexpr double kRingGap = 1e-6;  // m: pins of one ring share their distance from the axis
   for (int i : by_radius) {
     if (!press_contact[i]) continue;
-    if (out.rings.empty() || std::abs(out.rings.back().r_over_a * a_m - r_pin[i]) > kRingGap) {
+    if (out.rings.empty() || std::abs(out.rings.back().r_over_a - r_pin[i] / a_m) > kSameRing) {
       DomeRing ring;
       ring.r_over_a = r_pin[i] / a_m;
       out.rings.push_back(ring);

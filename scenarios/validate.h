@@ -131,6 +131,9 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
                                        double mu, int grid_points);
 
+/// Throws InputError unless the skin is the membrane-coupled lattice the dome check needs.
+void CheckDomeSkin(const SkinConfig& skin);
+
 /// Presses a membrane-coupled lattice onto a flat plate and shears the plate slowly to
 /// gross slip (single-coefficient Coulomb friction), comparing the stick region with
 /// Cattaneo-Mindlin and the brush model.

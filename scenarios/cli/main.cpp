@@ -241,8 +241,28 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*cmd_validate) {
-      // The skin, contact and solver sections of the rail config apply to the rig.
+      // The skin, contact and solver sections of the rail config apply to the rigs. The
+      // dome: the membrane-coupled lattice (the fingerprint-v2 skin unless --skin names
+      // another membrane skin) with single-coefficient friction at 1 ms, twice: with a
+      // 0.3 mm skin, whose membrane reaches a third of the contact radius (the regime of the
+      // continuum band), and as configured. Every config is checked before anything runs.
       const auto rail = tactip::LoadConfig<tactip::RailScenarioConfig>(config_path, sets);
+      std::vector<std::string> dome_sets = tactip::SkinPreset(skin_name.empty() ? "fingerprint-v2" : skin_name);
+      dome_sets.push_back("sim.timestep_s=0.001");
+      dome_sets.insert(dome_sets.end(), sets.begin(), sets.end());
+      const auto dome_options = [&](const std::vector<std::string>& extra) {
+        std::vector<std::string> all = dome_sets;
+        all.insert(all.end(), extra.begin(), extra.end());
+        const auto cfg = tactip::LoadConfig<tactip::RailScenarioConfig>(config_path, all);
+        tactip::DomeCheckOptions d;
+        d.rig.sim = cfg.sim;
+        d.rig.skin = cfg.skin;
+        d.rig.contact = cfg.contact;
+        tactip::CheckDomeSkin(d.rig.skin);
+        return d;
+      };
+      const tactip::DomeCheckOptions continuum_dome = dome_options({"skin.thickness_mm=0.3"});
+      const tactip::DomeCheckOptions configured_dome = dome_options({});
       tactip::BrushCheckOptions o;
       o.rig.sim = rail.sim;
       o.rig.skin = rail.skin;
@@ -252,33 +272,20 @@ int main(int argc, char** argv) {
       constexpr double kAgreement = 0.98, kLoadError = 0.03;
       std::printf("%s", tactip::FormatBrushCheck(c, kAgreement, kLoadError).c_str());
       bool ok = c.state_agreement >= kAgreement && c.load_error_max <= kLoadError && c.slip_order_correlation >= 0.9;
-      // The dome: the membrane-coupled lattice (the fingerprint-v2 skin unless --skin
-      // names another membrane skin) with single-coefficient friction at 1 ms, twice: with a
-      // 0.3 mm skin, whose membrane reaches a third of the contact radius (the regime of the
-      // continuum band), and as configured.
-      std::vector<std::string> dome_sets = tactip::SkinPreset(skin_name.empty() ? "fingerprint-v2" : skin_name);
-      dome_sets.push_back("sim.timestep_s=0.001");
-      dome_sets.insert(dome_sets.end(), sets.begin(), sets.end());
-      const auto run_dome = [&](const std::vector<std::string>& extra, const tactip::DomeCriteria& k,
+      const auto run_dome = [&](const tactip::DomeCheckOptions& d, const tactip::DomeCriteria& k,
                                 const std::string& title) {
-        std::vector<std::string> all = dome_sets;
-        all.insert(all.end(), extra.begin(), extra.end());
-        const auto cfg = tactip::LoadConfig<tactip::RailScenarioConfig>(config_path, all);
-        tactip::DomeCheckOptions d;
-        d.rig.sim = cfg.sim;
-        d.rig.skin = cfg.skin;
-        d.rig.contact = cfg.contact;
-        std::fprintf(stderr, "validate: shearing the %s lattice (%g mm skin) to gross slip\n", cfg.skin.pattern.c_str(),
-                     cfg.skin.thickness_mm);
+        const tactip::SkinConfig& skin = d.rig.skin;
+        std::fprintf(stderr, "validate: shearing the %s lattice (%g mm skin) to gross slip\n", skin.pattern.c_str(),
+                     skin.thickness_mm);
         const tactip::DomeCheck dc = tactip::RunDomeCheck(d);
         std::printf("dome under rising tangential load, %s (%s, skin.thickness_mm = %g)\n%s", title.c_str(),
-                    cfg.skin.pattern.c_str(), cfg.skin.thickness_mm, tactip::FormatDomeCheck(dc, k).c_str());
+                    skin.pattern.c_str(), skin.thickness_mm, tactip::FormatDomeCheck(dc, k).c_str());
         return k.Pass(dc);
       };
       tactip::DomeCriteria continuum, configured;
       configured.judge_band = false;
-      ok = run_dome({"skin.thickness_mm=0.3"}, continuum, "continuum-regime lattice") && ok;
-      ok = run_dome({}, configured, "configured lattice") && ok;
+      ok = run_dome(continuum_dome, continuum, "continuum-regime lattice, skin thickness set to 0.3 mm") && ok;
+      ok = run_dome(configured_dome, configured, "configured lattice") && ok;
       if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
       return ok ? 0 : 1;
     }

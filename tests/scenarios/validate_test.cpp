@@ -144,7 +144,27 @@ TEST(QuasiStaticShearTest, UncoupledPinsReleaseAsTheBrushModelSays) {
   ASSERT_EQ(qs.grid_q.size(), 101u);
   EXPECT_NEAR(qs.grid_q.front(), 0.0, 1e-12);
   EXPECT_NEAR(qs.grid_q.back(), 1.0, 1e-12);
-  for (size_t g = 1; g < qs.grid_q.size(); ++g) EXPECT_GE(qs.grid_q[g], qs.grid_q[g - 1] - 1e-12);
+  for (size_t g = 0; g < qs.grid_q.size(); ++g) {
+    const double d = qs.gross_delta_m * static_cast<double>(g) / 100.0;
+    double q = 0.0;
+    for (size_t j = 0; j < N.size(); ++j) q += in[j] ? std::min(k * d, mu * N[j]) : 0.0;
+    EXPECT_NEAR(qs.grid_q[g], q / mu_P, 1e-9) << "grid point " << g;
+  }
+}
+
+TEST(QuasiStaticShearTest, PinOutOfContactPassesLoadThroughTheMembrane) {
+  // Chain 0 - 1 - 2 with pin 1 out of contact: while 0 and 2 stick, pin 1 sits at
+  // u1 = 2 kc d / (k + 2 kc), so pin 0 carries k d + kc (d - u1) and slips (N0 < N2) when
+  // that reaches mu N0.
+  const double k = 10.0, kc = 25.0, mu = 1.0, N0 = 0.2, N2 = 0.5;
+  const QuasiStaticShear qs = SolveQuasiStaticShear(Chain(3), k, kc, {N0, 0.0, N2}, {1, 0, 1}, mu, 0);
+  const double d0 = mu * N0 / (k + kc - 2.0 * kc * kc / (k + 2.0 * kc));
+  EXPECT_NEAR(qs.release_delta_m[0], d0, 1e-12);
+  EXPECT_TRUE(std::isnan(qs.release_q[1]));
+  EXPECT_LT(qs.release_delta_m[0], qs.release_delta_m[2]);
+  EXPECT_NEAR(qs.release_q[2], 1.0, 1e-12);
+  // At pin 0's release both contact pins carry the same load by symmetry.
+  EXPECT_NEAR(qs.release_q[0], 2.0 * mu * N0 / (mu * (N0 + N2)), 1e-12);
 }
 
 TEST(QuasiStaticShearTest, CoupledPairHandsTheSlippingPinsLagToItsNeighbour) {
