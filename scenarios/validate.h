@@ -101,6 +101,10 @@ struct DomeCheck {
   /// Spearman rank correlation between each pin's distance from the axis and the load at
   /// which it first slips, negated: +1 = the stick region shrinks strictly outside-in.
   double outside_in_correlation = 0.0;
+  /// Of the pairs of slipped pins at different distances from the axis, the fraction whose
+  /// outer pin slipped first (a tie in load counts half): 1 = strictly ring by ring inwards.
+  double outside_in_order = 0.0;
+  long outside_in_pairs = 0;
   /// The same lattice solved exactly (SolveQuasiStaticShear with the press's normal loads):
   /// the fraction of its stick boundaries, sampled alike, that reach the band ...
   double qs_bracket_fraction = 0.0;
@@ -142,7 +146,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts);
 /// What a dome check must show to pass.
 struct DomeCriteria {
   double gross_error = 0.03;      ///< gross slip within this fraction of mu P
-  double outside_in = 0.9;        ///< Spearman(-radius, load at first slip) at least this
+  double outside_in = 0.9;        ///< outside-in pair order (DomeCheck::outside_in_order) at least this
   double release_error = 0.01;    ///< every pin's release within this (Q / mu P) of the exact solution
   /// Judge the continuum band (brush .. Cattaneo-Mindlin) on this lattice; false reports it
   /// only (a membrane-dominated lattice, whose exact solution lies inside the band too).
@@ -154,6 +158,12 @@ struct DomeCriteria {
 
 /// Text report of a dome check against its criteria.
 std::string FormatDomeCheck(const DomeCheck& c, const DomeCriteria& criteria);
+
+/// Of the pairs of pins at different distances from the axis (given negated, as -radius or
+/// -polar angle), the fraction whose outer pin has the lower load at first slip; a tie in
+/// load counts half. Writes the number of such pairs to pairs_out if given.
+double OutsideInOrder(const std::vector<double>& minus_radius, const std::vector<double>& load,
+                      long* pairs_out = nullptr);
 
 /// Spearman rank correlation of two equal-length samples (ties get average ranks).
 double SpearmanCorrelation(const std::vector<double>& a, const std::vector<double>& b);

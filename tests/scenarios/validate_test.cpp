@@ -48,6 +48,8 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
   ASSERT_GE(c.pins_in_contact, 19);
   EXPECT_NEAR(c.gross_q_ratio, 1.0, 0.03);
   EXPECT_GE(c.outside_in_correlation, 0.9);
+  EXPECT_GE(c.outside_in_order, 0.9);
+  EXPECT_GT(c.outside_in_pairs, 300) << "37 pins on 4 rings";
   // The stick region only shrinks while the load rises, from full stick to gross slip.
   ASSERT_FALSE(c.samples.empty());
   EXPECT_EQ(c.samples.front().sticking, c.samples.front().contacting);
@@ -184,6 +186,18 @@ TEST(QuasiStaticShearTest, CoupledPairHandsTheSlippingPinsLagToItsNeighbour) {
   EXPECT_TRUE(qs.grid_q.empty());
   EXPECT_THROW(SolveQuasiStaticShear(Chain(2), k, kc, {N0}, {1, 1}, mu, 0), std::invalid_argument);
   EXPECT_THROW(SolveQuasiStaticShear(Chain(2), k, kc, {N0, N1}, {0, 0}, mu, 0), SimulationError);
+}
+
+TEST(DomeCheckTest, OutsideInOrderCountsPairsOnDifferentRings) {
+  // Three rings (-radius -3, -2, -1), two pins on the outer ring.
+  const std::vector<double> minus_r = {-3, -3, -2, -1};
+  long pairs = 0;
+  EXPECT_NEAR(OutsideInOrder(minus_r, {0.1, 0.3, 0.5, 1.0}, &pairs), 1.0, 1e-12);
+  EXPECT_EQ(pairs, 5) << "the two outer pins are not compared with each other";
+  EXPECT_NEAR(OutsideInOrder(minus_r, {1.0, 1.0, 1.0, 1.0}), 0.5, 1e-12) << "all at once is not outside-in";
+  EXPECT_NEAR(OutsideInOrder(minus_r, {1.0, 0.9, 0.5, 0.1}), 0.0, 1e-12);
+  // The rank correlation of a strict ring-by-ring release stays below 1 (ties in radius).
+  EXPECT_LT(SpearmanCorrelation(minus_r, {0.1, 0.3, 0.5, 1.0}), 1.0);
 }
 
 TEST(BrushModelTest, SpearmanHandlesTiesAndDirection) {
