@@ -261,8 +261,14 @@ int main(int argc, char** argv) {
         tactip::CheckDomeSkin(d.rig.skin);
         return d;
       };
-      const tactip::DomeCheckOptions continuum_dome = dome_options({"skin.thickness_mm=0.3"});
       const tactip::DomeCheckOptions configured_dome = dome_options({});
+      const tactip::DomeCheckOptions continuum_dome = [&] {
+        try {
+          return dome_options({"skin.thickness_mm=0.3"});
+        } catch (const tactip::InputError& e) {
+          throw tactip::InputError(std::string("continuum-regime dome (skin.thickness_mm=0.3): ") + e.what());
+        }
+      }();
       tactip::BrushCheckOptions o;
       o.rig.sim = rail.sim;
       o.rig.skin = rail.skin;
