@@ -16,6 +16,8 @@
 namespace tactip {
 
 namespace {
+
+constexpr double kSameRing = 1e-9;  // pins of one ring differ in radius (m, rad or r/a) by rounding only
 // Quintic smooth step 0 -> 1.
 double Smooth(double u) {
   u = std::clamp(u, 0.0, 1.0);
@@ -190,10 +192,9 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
     mu_P += mu * normal_N[i];
   }
   if (!(mu_P > 0.0)) throw SimulationError("quasi-static shear: no pin in contact");
-  // Segments between releases: stuck set, start displacement, and Q = q0 + q1 delta.
+  // Segments between releases: start displacement, and Q = q0 + q1 delta.
   struct Segment {
     double delta0, q0, q1;
-    std::vector<std::uint8_t> stuck;
   };
   std::vector<Segment> segments;
   double delta = 0.0;
@@ -219,7 +220,7 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
     // Forces on the stuck pins: f = f0 + delta f1.
     double best = std::numeric_limits<double>::infinity();
     int release = -1;
-    Segment seg{delta, 0.0, 0.0, stuck};
+    Segment seg{delta, 0.0, 0.0};
     for (int i = 0; i < n; ++i) {
       if (slipped[i]) seg.q0 += mu * normal_N[i];
     }
@@ -253,11 +254,10 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
     size_t k = 0;
     for (int g = 0; g < grid_points; ++g) {
       const double d = delta * g / (grid_points - 1);
-      // At a release the later segment's stuck set holds (Q is continuous there); the last
-      // point, at gross slip, keeps the last pin stuck.
+      // Q is continuous at a release, so either segment gives it there.
       while (k + 1 < segments.size() && d >= segments[k + 1].delta0) ++k;
+      out.grid_delta_m.push_back(d);
       out.grid_q.push_back((segments[k].q0 + segments[k].q1 * d) / mu_P);
-      out.grid_stuck.push_back(segments[k].stuck);
     }
   }
   return out;
@@ -372,7 +372,6 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
       break;
     }
   }
-  constexpr double kSameRing = 1e-9;  // pins of one ring differ in radius by rounding only
   const auto judged = [](double q) { return q >= 0.1 && q <= 0.9; };
   const auto in_band = [&](double q, double c_lo, double c_hi) {
     return c_lo <= c_hi + kSameRing && c_hi >= std::cbrt(1.0 - q) - opts.tolerance &&
@@ -401,7 +400,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
     double c_lo = 0.0, c_hi = std::numeric_limits<double>::infinity();
     for (int i = 0; i < N; ++i) {
       if (!press_contact[i]) continue;
-      if (qs.grid_stuck[g][i]) {
+      if (qs.StuckAt(i, qs.grid_delta_m[g])) {
         c_lo = std::max(c_lo, r_pin[i] / a_m);
       } else {
         c_hi = std::min(c_hi, r_pin[i] / a_m);
@@ -448,10 +447,14 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   return out;
 }
 
+bool DomeCriteria::GrossOk(const DomeCheck& c) const { return std::abs(c.gross_q_ratio - 1.0) <= gross_error; }
+bool DomeCriteria::OutsideInOk(const DomeCheck& c) const { return c.outside_in_order >= outside_in; }
+bool DomeCriteria::ReleaseOk(const DomeCheck& c) const {
+  return c.release_pins_compared == c.pins_in_contact && c.release_error_max <= release_error;
+}
+bool DomeCriteria::BandOk(const DomeCheck& c) const { return c.bracket_fraction >= band_required; }
 bool DomeCriteria::Pass(const DomeCheck& c) const {
-  return std::abs(c.gross_q_ratio - 1.0) <= gross_error && c.outside_in_order >= outside_in &&
-         c.release_pins_compared == c.pins_in_contact && c.release_error_max <= release_error &&
-         (!judge_band || c.bracket_fraction >= band_required);
+  return GrossOk(c) && OutsideInOk(c) && ReleaseOk(c) && (!judge_band || BandOk(c));
 }
 
 std::string FormatDomeCheck(const DomeCheck& c, const DomeCriteria& k) {
@@ -481,23 +484,23 @@ std::string FormatDomeCheck(const DomeCheck& c, const DomeCriteria& k) {
                        1.0 - std::pow(r.r_over_a, 4.0));
   }
   out += fmt::format("  gross slip at Q = {:.4f} mu P (required within {:.0f} %): {}\n", c.gross_q_ratio,
-                     100.0 * k.gross_error, verdict(std::abs(c.gross_q_ratio - 1.0) <= k.gross_error));
+                     100.0 * k.gross_error, verdict(k.GrossOk(c)));
   out += fmt::format("  stick region shrinks outside-in: of {} pin pairs on different rings, the outer pin slips first "
                      "in {:.1f} % (ties half; required >= {:.0f} %): {}; Spearman(-radius, load at first slip) {:.3f}\n",
                      c.outside_in_pairs, 100.0 * c.outside_in_order, 100.0 * k.outside_in,
-                     verdict(c.outside_in_order >= k.outside_in), c.outside_in_correlation);
+                     verdict(k.OutsideInOk(c)), c.outside_in_correlation);
   out += fmt::format("  every pin slips at the exact quasi-static load: mean |error| {:.4f}, max {:.4f} Q/muP over {} of "
                      "{} pins (allowed {:.2f}): {}\n",
                      c.release_error_mean, c.release_error_max, c.release_pins_compared, c.pins_in_contact,
                      k.release_error,
-                     verdict(c.release_pins_compared == c.pins_in_contact && c.release_error_max <= k.release_error));
+                     verdict(k.ReleaseOk(c)));
   const std::string band = fmt::format(
       "  stick boundary (outermost sticking .. innermost slipping pin) reaches the band between Cattaneo-Mindlin and "
       "brush in {:.1f} % of {} samples with 0.1 <= Q/muP <= 0.9 (exact solution: {:.1f} %)",
       100.0 * c.bracket_fraction, c.samples_judged, 100.0 * c.qs_bracket_fraction);
   if (k.judge_band) {
     out += fmt::format("{} (required >= {:.0f} %): {}\n", band, 100.0 * k.band_required,
-                       verdict(c.bracket_fraction >= k.band_required));
+                       verdict(k.BandOk(c)));
   } else {
     out += band + " (reported; the band is judged on the continuum-regime lattice)\n";
   }
@@ -511,12 +514,11 @@ double OutsideInOrder(const std::vector<double>& minus_radius, const std::vector
   // Pins of one ring tie in radius, so a rank correlation stays below 1 even for a strict
   // ring-by-ring release; the pair count does not. A tie in load counts half, so a lattice
   // whose pins all let go at once scores 0.5.
-  constexpr double kSameRadius = 1e-9;
   double in_order = 0.0;
   long pairs = 0;
   for (size_t p = 0; p < minus_radius.size(); ++p) {
     for (size_t q = p + 1; q < minus_radius.size(); ++q) {
-      if (std::abs(minus_radius[p] - minus_radius[q]) <= kSameRadius) continue;
+      if (std::abs(minus_radius[p] - minus_radius[q]) <= kSameRing) continue;
       const bool p_outer = minus_radius[p] < minus_radius[q];
       const double outer = p_outer ? load[p] : load[q], inner = p_outer ? load[q] : load[p];
       in_order += outer < inner ? 1.0 : (outer == inner ? 0.5 : 0.0);

@@ -126,10 +126,13 @@ struct QuasiStaticShear {
   std::vector<double> release_q;   ///< per pin: Q / (mu P) at which it slips (NaN: not in contact)
   std::vector<double> release_delta_m;  ///< per pin: plate displacement at which it slips
   double gross_delta_m = 0.0;      ///< plate displacement at which the last pin slips
-  /// Q / (mu P) and the stuck set on a uniform grid of plate displacement up to gross slip
-  /// (the dome check's ramp samples at constant speed, so the two sample alike).
-  std::vector<double> grid_q;
-  std::vector<std::vector<std::uint8_t>> grid_stuck;
+  /// A uniform grid of plate displacement up to gross slip (the dome check's ramp samples at
+  /// constant speed, so the two sample alike) and Q / (mu P) on it.
+  std::vector<double> grid_delta_m, grid_q;
+
+  /// Whether pin i still sticks at plate displacement delta (a pin counts as slipped from
+  /// its release on).
+  bool StuckAt(size_t i, double delta) const { return delta < release_delta_m[i]; }
 };
 QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
@@ -153,6 +156,11 @@ struct DomeCriteria {
   bool judge_band = true;
   double band_required = 0.9;     ///< fraction of judged samples whose stick boundary reaches the band
 
+  bool GrossOk(const DomeCheck& c) const;
+  bool OutsideInOk(const DomeCheck& c) const;
+  bool ReleaseOk(const DomeCheck& c) const;
+  bool BandOk(const DomeCheck& c) const;
+  /// Every criterion, the band only where judged.
   bool Pass(const DomeCheck& c) const;
 };
 

@@ -151,6 +151,10 @@ TEST(QuasiStaticShearTest, UncoupledPinsReleaseAsTheBrushModelSays) {
     double q = 0.0;
     for (size_t j = 0; j < N.size(); ++j) q += in[j] ? std::min(k * d, mu * N[j]) : 0.0;
     EXPECT_NEAR(qs.grid_q[g], q / mu_P, 1e-9) << "grid point " << g;
+    EXPECT_NEAR(qs.grid_delta_m[g], d, 1e-15);
+    for (size_t j = 0; j < N.size(); ++j) {
+      EXPECT_EQ(qs.StuckAt(j, d), in[j] && k * d < mu * N[j]) << "pin " << j << ", grid point " << g;
+    }
   }
 }
 
