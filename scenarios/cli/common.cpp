@@ -1,0 +1,81 @@
+#include "scenarios/cli/common.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "models/skin.h"
+
+namespace tactip::cli {
+
+std::string Fmt(double v, const char* spec) {
+  return std::isnan(v) ? std::string("-") : fmt::format(fmt::runtime(spec), v);
+}
+
+double Attr(const RunRecord& r, const std::string& key) {
+  auto it = r.attrs.find(key);
+  return it == r.attrs.end() ? std::nan("") : it->second;
+}
+
+void ConfigArgs::Add(CLI::App* c) {
+  c->add_option("scenario", scenario, "Scenario name (see 'tactip scenarios').")->required();
+  c->add_option("--config", config_path, "YAML config file; its keys override the built-in defaults (see assets/scenes/).")
+      ->check(CLI::ExistingFile);
+  c->add_option("--set", sets,
+                "Override one config key, e.g. --set sensor.pixel_noise_px=0.3 (repeatable; applied after "
+                "--config and the shortcut options). 'tactip config SCENARIO' lists every key.")
+      ->type_name("KEY=VALUE");
+  c->add_option("--speed-mm-s", speed_mm_s, "Shortcut for --set rail.retract_speed_mm_s=V.");
+  c->add_option("--stimulus", stimulus, "Shortcut for --set rail.stimulus=S (flat, acrylic, curved80, curved40, curved20).");
+  c->add_option("--skin", skin,
+                "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling and the "
+                "variant's ridge/thickness/pin keys; applied before --set).");
+}
+
+ConfigSource ConfigArgs::Source() const {
+  ConfigSource src;
+  src.yaml_path = config_path;
+  if (!skin.empty()) src.overrides = SkinPreset(skin);
+  if (!std::isnan(speed_mm_s)) src.overrides.push_back(fmt::format("rail.retract_speed_mm_s={}", speed_mm_s));
+  if (!stimulus.empty()) src.overrides.push_back("rail.stimulus=" + stimulus);
+  src.overrides.insert(src.overrides.end(), sets.begin(), sets.end());
+  return src;
+}
+
+void PrintDatasetSummary(const std::string& path, bool with_config) {
+  DatasetReader reader(path);
+  const auto& h = reader.header();
+  const auto& runs = reader.run_indices();
+  std::printf("dataset      %s\n", path.c_str());
+  std::printf("scenario     %s (tactip %s, seed %llu)\n", h.scenario.c_str(), h.tactip_version.c_str(),
+              static_cast<unsigned long long>(h.seed));
+  std::printf("runs         %zu\n", runs.size());
+  std::printf("%5s %7s %9s %10s %10s %10s %8s %9s %8s %9s\n", "run", "frames", "length_s", "onset_s", "fall_s",
+              "coulomb_s", "mu", "depth_mm", "v_mm_s", "creep_um");
+  size_t frames = 0;
+  int slipped = 0;
+  double err_sum = 0.0;
+  int err_n = 0;
+  for (int idx : runs) {
+    const RunRecord r = reader.ReadRunSummary(idx);
+    frames += r.frames();
+    const double onset = Attr(r, "gross_slip_onset_s");
+    const double pred = Attr(r, "predicted_onset_s");
+    if (!std::isnan(onset)) ++slipped;
+    if (!std::isnan(onset) && !std::isnan(pred)) {
+      err_sum += std::abs(onset - pred);
+      ++err_n;
+    }
+    std::printf("%5d %7zu %9.2f %10s %10s %10s %8.4f %9.3f %8.3f %9s\n", idx, r.frames(),
+                r.frames() ? r.time.back() : 0.0, Fmt(onset).c_str(), Fmt(Attr(r, "object_fall_s")).c_str(),
+                Fmt(pred).c_str(), Attr(r, "friction_coefficient"), Attr(r, "press_depth_mm"),
+                Attr(r, "retract_speed_mm_s"), Fmt(Attr(r, "creep_um"), "{:.2f}").c_str());
+  }
+  std::printf("total        %zu frames; gross slip in %d of %zu runs", frames, slipped, runs.size());
+  if (err_n > 0) std::printf("; mean |onset - Coulomb prediction| = %.1f ms", 1e3 * err_sum / err_n);
+  std::printf("\n");
+  if (with_config) std::printf("config:\n%s", h.config_yaml.c_str());
+}
+
+}  // namespace tactip::cli

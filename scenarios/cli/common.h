@@ -1,0 +1,40 @@
+#pragma once
+// Helpers shared by the subcommands of `tactip`: number formatting, run attributes, the
+// options that pick a scenario config, and the dataset summary.
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "scenarios/registry.h"
+#include "sensors/dataset.h"
+
+namespace tactip::cli {
+
+/// `v` formatted with `spec`, or "-" when it is NaN (an event that did not happen).
+std::string Fmt(double v, const char* spec = "{:.3f}");
+
+/// A run attribute, NaN when absent.
+double Attr(const RunRecord& r, const std::string& key);
+
+/// The options that choose a scenario and its config: scenario name, --config, --set and
+/// the shortcuts (--speed-mm-s, --stimulus, --skin).
+struct ConfigArgs {
+  std::string scenario;            ///< scenario name
+  std::string config_path;         ///< --config YAML file
+  std::vector<std::string> sets;   ///< --set KEY=VALUE, in order
+  double speed_mm_s = std::nan("");///< --speed-mm-s (NaN: not given)
+  std::string stimulus;            ///< --stimulus
+  std::string skin;                ///< --skin preset
+
+  /// Registers the options on `c` (the scenario as a required positional).
+  void Add(CLI::App* c);
+  /// The config source: file, skin preset, shortcuts, then --set in order.
+  ConfigSource Source() const;
+};
+
+/// Prints a dataset's header, one line per run, totals and (optionally) the stored config.
+void PrintDatasetSummary(const std::string& path, bool with_config);
+
+}  // namespace tactip::cli

@@ -1,0 +1,143 @@
+#include "scenarios/cli/scenario_commands.h"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "scenarios/cli/common.h"
+#include "sim/files.h"
+
+namespace tactip::cli {
+
+namespace {
+
+// Options of the scenario subcommands (owned by the returned closure).
+struct ScenarioArgs {
+  ConfigArgs config;
+  std::string out;
+  int runs = 4, jobs = 0;
+  unsigned long long seed = 1;
+  bool quiet = false;
+  std::string info_path;
+  bool no_config = false;
+  bool as_yaml = false, with_comments = false;
+};
+
+// tactip config: the table of keys, or the resolved config as (commented) YAML.
+int RunConfig(const ScenarioEntry& entry, const ConfigSource& src, const ScenarioArgs& a) {
+  const auto fields = entry.describe(src);
+  if (a.as_yaml && a.with_comments) {
+    const std::string header = fmt::format(
+        "# {} scenario: every config key with its meaning; values as resolved from the given options.\n"
+        "# Use with: tactip generate {} --config FILE [--set key=value ...]\n"
+        "# 'tactip config {}' prints the same keys with units and allowed ranges.\n",
+        entry.name, entry.name, entry.name);
+    std::printf("%s", FieldsToCommentedYaml(fields, header).c_str());
+    return 0;
+  }
+  if (a.as_yaml) {
+    std::printf("%s", FieldsToYaml(fields).c_str());
+    return 0;
+  }
+  for (const auto& f : fields) {
+    std::printf("%-32s %-12s %-8s %-16s %s\n", f.key.c_str(), f.value.c_str(), f.unit.c_str(), f.allowed.c_str(),
+                f.doc.c_str());
+  }
+  return 0;
+}
+
+// tactip export-mjcf: the scene's MJCF to a file or standard output.
+int RunExport(const ScenarioEntry& entry, const ConfigSource& src, const std::string& out) {
+  if (!out.empty()) CheckWritableLocation(out);
+  const std::string xml = entry.export_mjcf(src);
+  if (out.empty()) {
+    std::printf("%s", xml.c_str());
+  } else {
+    WriteFileAtomic(out, xml);
+    std::fprintf(stderr, "wrote %s (%zu bytes)\n", out.c_str(), xml.size());
+  }
+  return 0;
+}
+
+// One progress line per finished run.
+void PrintRunProgress(int done, int total, int idx, const RailRunSummary& s) {
+  std::fprintf(stderr,
+               "[%d/%d] run %d: incipient %s s, onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s%s\n",
+               done, total, idx, Fmt(s.incipient_onset_s).c_str(), Fmt(s.gross_slip_onset_s).c_str(),
+               Fmt(s.object_fall_s).c_str(), Fmt(s.predicted_onset_s).c_str(), s.sim_time_s, s.wall_time_s,
+               s.held ? "" : " (not held: slipped during the lift; press deeper or lighten the object)");
+}
+
+// tactip generate: simulate and write the dataset, then print its summary.
+int RunGenerate(const ScenarioEntry& entry, const ConfigSource& src, const ScenarioArgs& a,
+                const std::atomic<bool>* stop) {
+  entry.describe(src);  // validates the config before anything is printed or written
+  GenerateOptions opts;
+  opts.out_path = a.out.empty() ? entry.name + ".h5" : a.out;
+  CheckWritableLocation(opts.out_path);
+  opts.runs = a.runs;
+  opts.seed = a.seed;
+  opts.jobs = a.jobs;
+  opts.scenario = entry.name;
+  opts.stop = stop;
+  if (!a.quiet) {
+    opts.progress = PrintRunProgress;
+    std::fprintf(stderr, "generating %d %s run(s) into %s\n", a.runs, entry.name.c_str(), opts.out_path.c_str());
+  }
+  const GenerateResult r = entry.generate(src, opts);
+  std::fprintf(stderr, "done: %d runs, %.1f s simulated in %.1f s wall (%.1fx real time overall)\n", r.runs,
+               r.sim_time_s, r.wall_time_s, r.sim_time_s / r.wall_time_s);
+  PrintDatasetSummary(opts.out_path, false);
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>* stop) {
+  auto a = std::make_shared<ScenarioArgs>();
+
+  auto* list = app.add_subcommand("scenarios", "List the registered scenarios with one-line descriptions.");
+
+  auto* gen = app.add_subcommand("generate", "Simulate runs of a scenario and write a labelled HDF5 dataset.");
+  a->config.Add(gen);
+  gen->add_option("--runs", a->runs, "Number of runs (default 4).")->check(CLI::Range(1, 100000));
+  gen->add_option("--seed", a->seed, "Master seed; run i derives its own seed from it (default 1).");
+  gen->add_option("--out", a->out, "Output HDF5 file (default SCENARIO.h5); written atomically.");
+  gen->add_option("--jobs", a->jobs, "Worker threads (default: all cores); results do not depend on it.")
+      ->check(CLI::Range(0, 256));
+  gen->add_flag("--quiet", a->quiet, "No per-run progress lines.");
+
+  auto* info = app.add_subcommand("info", "Show the runs, frames, slip onsets and config of a dataset.");
+  info->add_option("file", a->info_path, "HDF5 dataset written by 'tactip generate'.")->required();
+  info->add_flag("--no-config", a->no_config, "Do not print the stored config.");
+
+  auto* exp = app.add_subcommand("export-mjcf", "Write the exact MuJoCo model (MJCF) a scenario builds.");
+  a->config.Add(exp);
+  exp->add_option("--out", a->out, "Output XML file (default: standard output).");
+
+  auto* cfg = app.add_subcommand("config", "List every config key of a scenario with unit, range and meaning.");
+  a->config.Add(cfg);
+  cfg->add_flag("--yaml", a->as_yaml, "Print the resolved config as YAML instead of the table.");
+  cfg->add_flag("--comments", a->with_comments, "With --yaml: each key's meaning and unit as a comment above it.");
+
+  return [a, list, gen, info, exp, cfg, stop]() -> int {
+    if (*list) {
+      for (const auto& s : Scenarios()) std::printf("%-12s %s\n", s.name.c_str(), s.description.c_str());
+      return 0;
+    }
+    if (*info) {
+      PrintDatasetSummary(a->info_path, !a->no_config);
+      return 0;
+    }
+    if (!*gen && !*exp && !*cfg) return -1;
+    const ScenarioEntry& entry = FindScenario(a->config.scenario);
+    const ConfigSource src = a->config.Source();
+    if (*cfg) return RunConfig(entry, src, *a);
+    if (*exp) return RunExport(entry, src, a->out);
+    return RunGenerate(entry, src, *a, stop);
+  };
+}
+
+}  // namespace tactip::cli

@@ -1,0 +1,210 @@
+#include "scenarios/cli/study_commands.h"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scenarios/cli/common.h"
+#include "scenarios/incipient_report.h"
+#include "scenarios/sweep.h"
+#include "scenarios/validate.h"
+#include "sim/files.h"
+
+namespace tactip::cli {
+
+namespace {
+
+// Options of the study subcommands (owned by the returned closure).
+struct StudyArgs {
+  ConfigArgs config;
+  std::string validate_what;
+  std::vector<std::string> sweep_params;
+  int sweep_runs = 4, jobs = 0;
+  unsigned long long seed = 1;
+  std::string out;
+  bool quiet = false;
+  IncipientParams sweep_detector;
+  std::string report_what, report_path, report_csv;
+  IncipientParams report_params;
+};
+
+// The dome-check options for the rail config with the dome's skin, 1 ms step and `extra`.
+DomeCheckOptions DomeOptions(const ConfigArgs& c, const std::vector<std::string>& extra) {
+  std::vector<std::string> sets = SkinPreset(c.skin.empty() ? "fingerprint-v2" : c.skin);
+  sets.push_back("sim.timestep_s=0.001");
+  sets.insert(sets.end(), c.sets.begin(), c.sets.end());
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  const auto cfg = LoadConfig<RailScenarioConfig>(c.config_path, sets);
+  DomeCheckOptions d;
+  d.rig.sim = cfg.sim;
+  d.rig.skin = cfg.skin;
+  d.rig.contact = cfg.contact;
+  CheckDomeSkin(d.rig.skin);
+  return d;
+}
+
+// Runs one dome check and prints it; true when it passes.
+bool RunDome(const DomeCheckOptions& d, const DomeCriteria& k, const std::string& title) {
+  const SkinConfig& skin = d.rig.skin;
+  std::fprintf(stderr, "validate: shearing the %s lattice (%g mm skin) to gross slip\n", skin.pattern.c_str(),
+               skin.thickness_mm);
+  const DomeCheck dc = RunDomeCheck(d);
+  std::printf("dome under rising tangential load, %s (%s, skin.thickness_mm = %g)\n%s", title.c_str(),
+              skin.pattern.c_str(), skin.thickness_mm, FormatDomeCheck(dc, k).c_str());
+  return k.Pass(dc);
+}
+
+// tactip validate contact: the brush check on the uncoupled lattice, then the dome on the
+// membrane-coupled lattice (fingerprint-v2 unless --skin names another membrane skin) at
+// 1 ms, twice: with a 0.3 mm skin (membrane reach a third of the contact radius, the regime
+// of the continuum band) and as configured. Every config is checked before anything runs.
+int RunValidate(const ConfigArgs& c) {
+  const auto rail = LoadConfig<RailScenarioConfig>(c.config_path, c.sets);
+  const DomeCheckOptions configured_dome = DomeOptions(c, {});
+  const DomeCheckOptions continuum_dome = [&] {
+    try {
+      return DomeOptions(c, {"skin.thickness_mm=0.3"});
+    } catch (const InputError& e) {
+      throw InputError(std::string("continuum-regime dome (skin.thickness_mm=0.3): ") + e.what());
+    }
+  }();
+  BrushCheckOptions o;
+  o.rig.sim = rail.sim;
+  o.rig.skin = rail.skin;
+  o.rig.contact = rail.contact;
+  std::fprintf(stderr, "validate: pressing an uncoupled lattice and shearing it past gross slip\n");
+  const BrushCheck bc = RunBrushCheck(o);
+  constexpr double kAgreement = 0.98, kLoadError = 0.03;
+  std::printf("%s", FormatBrushCheck(bc, kAgreement, kLoadError).c_str());
+  bool ok = bc.state_agreement >= kAgreement && bc.load_error_max <= kLoadError && bc.slip_order_correlation >= 0.9;
+  DomeCriteria continuum, configured;
+  configured.judge_band = false;
+  ok = RunDome(continuum_dome, continuum, "continuum-regime lattice, its thickness fixed") && ok;
+  ok = RunDome(configured_dome, configured, "configured lattice") && ok;
+  if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
+  return ok ? 0 : 1;
+}
+
+// tactip report incipient: per-run figures of a dataset, optionally as CSV.
+int RunReport(const StudyArgs& a) {
+  if (!a.report_csv.empty()) CheckWritableLocation(a.report_csv);
+  const DatasetReader reader(a.report_path);
+  std::vector<IncipientRunMetrics> metrics;
+  for (int idx : reader.run_indices()) metrics.push_back(AnalyzeIncipientRun(reader.ReadRun(idx), a.report_params));
+  std::printf("%s", FormatIncipientReport(metrics, SummarizeIncipient(metrics)).c_str());
+  if (!a.report_csv.empty()) WriteFileAtomic(a.report_csv, IncipientCsv(metrics));
+  return 0;
+}
+
+// One progress line per finished design.
+void PrintDesignProgress(int done, int total, const SweepDesignResult& r) {
+  std::string d;
+  for (const auto& [k, v] : r.design) d += (d.empty() ? "" : " ") + k + "=" + v;
+  std::fprintf(stderr,
+               "[%d/%d] %s: %d pins, incipient in %d/%d runs, lead %s +- %s s, pre-slip %s, peak %s px/frame, "
+               "detector before fall %d/%d (%.1f s)\n",
+               done, total, d.c_str(), r.n_pins, r.summary.with_incipient, r.summary.runs,
+               Fmt(r.summary.lead_gross_mean_s).c_str(), Fmt(r.summary.lead_gross_std_s).c_str(),
+               Fmt(r.summary.pre_slip_fraction_mean).c_str(), Fmt(r.summary.peak_speed_mean_px).c_str(),
+               r.summary.detected_before_fall, r.summary.runs, r.wall_time_s);
+}
+
+// tactip sweep: every design of the grid, CSVs and heatmaps in the output folder.
+int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
+  const ScenarioEntry& entry = FindScenario(a.config.scenario);
+  SweepOptions o;
+  o.scenario = &entry;
+  o.base = a.config.Source();
+  for (const auto& p : a.sweep_params) o.params.push_back(ParseSweepParam(p));
+  o.runs = a.sweep_runs;
+  o.seed = a.seed;
+  o.jobs = a.jobs;
+  o.out_dir = a.out.empty() ? "sweep" : a.out;
+  o.detector = a.sweep_detector;
+  o.stop = stop;
+  if (!a.quiet) {
+    o.started = [&](size_t designs) {
+      std::fprintf(stderr, "sweeping %zu design(s) x %d run(s) of %s into %s/\n", designs, a.sweep_runs,
+                   entry.name.c_str(), o.out_dir.c_str());
+    };
+  }
+  const auto wall0 = std::chrono::steady_clock::now();
+  const auto results = RunSweep(o, [&](int done, int total, const SweepDesignResult& r) {
+    if (!a.quiet) PrintDesignProgress(done, total, r);
+  });
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::fprintf(stderr, "done: %zu designs in %.1f s; wrote %s/designs.csv, runs.csv%s\n", results.size(), wall,
+               o.out_dir.c_str(), o.params.size() <= 2 ? " and one heatmap per metric (*.svg)" : "");
+  return 0;
+}
+
+// Registers `tactip sweep` and its options.
+CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
+  auto* c = app.add_subcommand("sweep",
+                               "Run a scenario over a grid of config values; one CSV row per design with its "
+                               "incipient-slip figures and one heatmap (SVG) per metric.");
+  a.config.Add(c);
+  c->add_option("--param", a.sweep_params,
+                "Swept key: KEY=START:STOP:STEP, KEY=A,B,C or KEY=V (repeatable; first varies slowest; heatmaps "
+                "need 1 or 2).")
+      ->required()
+      ->type_name("SPEC");
+  c->add_option("--runs", a.sweep_runs, "Runs per design; every design uses the same run seeds (default 4).")
+      ->check(CLI::Range(1, 100000));
+  c->add_option("--seed", a.seed, "Master seed (default 1); the same seed reproduces the sweep exactly.");
+  c->add_option("--jobs", a.jobs, "Worker threads (default: all cores); results do not depend on it.")
+      ->check(CLI::Range(0, 256));
+  c->add_option("--out", a.out, "Output folder (default sweep/); created if missing.");
+  c->add_option("--window", a.sweep_detector.window, "Incipient detector window W (default 5).")
+      ->check(CLI::Range(1, 1000));
+  c->add_option("--speed-thr-px", a.sweep_detector.speed_thr_px, "Incipient detector s_thr (default 0.2).")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--count-thr", a.sweep_detector.count_thr, "Incipient detector I_thr (default 4).")
+      ->check(CLI::Range(1, 100000));
+  c->add_flag("--quiet", a.quiet, "No per-design progress lines.");
+  return c;
+}
+
+// Registers `tactip report incipient` and its options.
+CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
+  auto* c = app.add_subcommand("report",
+                               "Per-run incipient-slip figures of a dataset: ground-truth lead times, "
+                               "first-slipping pins, internal vs external tracking, and the incipient detector's "
+                               "alarms.");
+  c->add_option("what", a.report_what, "incipient")->required()->check(CLI::IsMember({"incipient"}));
+  c->add_option("file", a.report_path, "HDF5 dataset written by 'tactip generate'.")->required();
+  c->add_option("--window", a.report_params.window, "Detector moving-average window W (default 5).")
+      ->check(CLI::Range(1, 1000));
+  c->add_option("--speed-thr-px", a.report_params.speed_thr_px,
+                "Detector excess-speed threshold s_thr, px/frame (default 0.2).")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--count-thr", a.report_params.count_thr, "Detector set-size threshold I_thr (default 4).")
+      ->check(CLI::Range(1, 100000));
+  c->add_option("--csv", a.report_csv, "Also write the per-run table as CSV.");
+  return c;
+}
+
+}  // namespace
+
+std::function<int()> AddStudyCommands(CLI::App& app, const std::atomic<bool>* stop) {
+  auto a = std::make_shared<StudyArgs>();
+  auto* validate = app.add_subcommand(
+      "validate", "Check the simulated contact against analytic anchors and print measured vs predicted.");
+  validate->add_option("what", a->validate_what, "contact: the pin lattice against the brush model.")
+      ->required()
+      ->check(CLI::IsMember({"contact"}));
+  a->config.Add(validate);
+  validate->get_option("scenario")->required(false);
+  auto* sweep = AddSweep(app, *a);
+  auto* report = AddReport(app, *a);
+  return [a, validate, sweep, report, stop]() -> int {
+    if (*validate) return RunValidate(a->config);
+    if (*report) return RunReport(*a);
+    if (*sweep) return RunSweepCommand(*a, stop);
+    return -1;
+  };
+}
+
+}  // namespace tactip::cli

@@ -1,0 +1,57 @@
+#include "scenarios/rail/rail_config.h"
+
+#include <fmt/format.h>
+
+namespace tactip {
+
+void RailScenarioConfig::ValidateRules() const {
+  // Section rules first, then rules that tie sections together.
+  skin.ValidateRules();
+  contact.ValidateRules();
+  if (contact.timeconst_s < 2.0 * sim.timestep_s) {
+    FailRule("contact.timeconst_s", contact.timeconst_s,
+             fmt::format("must be >= 2 * sim.timestep_s = {} s (MuJoCo would silently soften it)",
+                         2.0 * sim.timestep_s));
+  }
+  // A run must end: the retraction (past the press plus 5 mm) within an hour of simulation.
+  constexpr double kMaxRetractS = 3600.0;
+  const double retract_mm = rail.approach_gap_mm + rail.press_depth_mm + rail.press_depth_jitter_mm + 5.0;
+  if (retract_mm / rail.retract_speed_mm_s > kMaxRetractS) {
+    FailRule("rail.retract_speed_mm_s", rail.retract_speed_mm_s,
+             fmt::format("the retraction would take {:.0f} s of simulated time (limit {:.0f} s); use >= {:.3g}",
+                         retract_mm / rail.retract_speed_mm_s, kMaxRetractS, retract_mm / kMaxRetractS));
+  }
+  if (external.enabled && rail.stimulus != "acrylic") {
+    FailRule("external.enabled", 1.0,
+             "the external camera sees the skin only through a transparent stimulus: set rail.stimulus = acrylic");
+  }
+  const double frame_dt = 1.0 / sensor.frame_rate_hz;
+  if (frame_dt < sim.timestep_s) {
+    FailRule("sensor.frame_rate_hz", sensor.frame_rate_hz,
+             fmt::format("one frame ({} s) is shorter than sim.timestep_s = {} s", frame_dt, sim.timestep_s));
+  }
+  if (sim.check_stability) {
+    const StiffMode mode = RailStiffestMode(SceneSpec());
+    const double dt_max = MaxStableTimestep(mode.omega, mode.zeta);
+    if (sim.timestep_s > dt_max) {
+      FailRule("sim.timestep_s", sim.timestep_s,
+               fmt::format("unstable: exceeds the limit {:.3g} s of {} (omega = {:.0f} rad/s, damping ratio {:.2f}); "
+                           "use sim.timestep_s <= {:.3g}",
+                           dt_max, mode.name, mode.omega, mode.zeta, dt_max));
+    }
+  }
+}
+
+RailSceneSpec RailScenarioConfig::SceneSpec() const {
+  RailSceneSpec spec;
+  spec.sim = sim;
+  spec.object = object;
+  spec.contact = contact;
+  spec.rail = rail;
+  spec.skin = skin;
+  spec.arm = arm;
+  spec.max_depth_m = (rail.press_depth_mm + rail.press_depth_jitter_mm) * 1e-3;
+  return spec;
+}
+
+}  // namespace tactip

@@ -1,0 +1,23 @@
+#include "scenarios/rail/rail_scenario.h"
+
+#include "scenarios/rail/rail_run.h"
+
+namespace tactip {
+
+RailScenario::RailScenario(const RailScenarioConfig& cfg) : cfg_(cfg) {
+  ValidateConfig(cfg_);
+  ids_ = std::make_unique<RailSceneIds>(cfg_);
+}
+
+RailScenario::~RailScenario() = default;
+
+const std::string& RailScenario::xml() const { return ids_->scene.xml; }
+int RailScenario::n_pins() const { return ids_->scene.n_pins; }
+int RailScenario::n_collidable() const { return ids_->scene.n_collidable; }
+
+RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec, const std::atomic<bool>* stop) const {
+  RailRun run(cfg_, *ids_, index, seed);
+  return run.Execute(rec, stop);
+}
+
+}  // namespace tactip
