@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "scenarios/plot.h"
 #include "sim/files.h"
 
 namespace tactip {
@@ -26,7 +27,33 @@ std::string DesignText(const SweepDesign& d) {
 
 std::string Num(double v) { return std::isnan(v) ? std::string("nan") : fmt::format("{:.6g}", v); }
 
+/// One PNG heatmap per metric from designs.csv: rows = first key, columns = second (or a
+/// single row for one key).
+void DrawHeatmaps(const SweepOptions& opts, const std::string& designs_csv) {
+  const std::filesystem::path dir(opts.out_dir);
+  const bool two = opts.params.size() == 2;
+  for (const auto& m : SweepMetrics()) {
+    HeatmapPlot p;
+    p.csv = designs_csv;
+    p.x_key = two ? opts.params[1].key : opts.params[0].key;
+    p.y_key = two ? opts.params[0].key : "";
+    p.value = m.name;
+    p.title = m.title;
+    p.unit = m.unit;
+    p.out_png = (dir / (m.name + ".png")).string();
+    try {
+      PlotHeatmap(p);
+    } catch (const PlotError& e) {
+      throw PlotError(std::string(e.what()) + " (designs.csv and runs.csv are written)");
+    }
+  }
+}
+
 }  // namespace
+
+bool SweepDrawsHeatmaps(const SweepOptions& opts) {
+  return opts.plots && (opts.params.size() == 1 || opts.params.size() == 2);
+}
 
 const std::vector<SweepMetric>& SweepMetrics() {
   static const std::vector<SweepMetric> metrics = {
@@ -85,6 +112,8 @@ std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
       throw InputError("design " + DesignText(d) + ": " + e.what());
     }
   }
+  // So must the plotting tool: a missing matplotlib fails now, not after hours of runs.
+  if (SweepDrawsHeatmaps(opts)) CheckPlotting();
   std::error_code ec;
   std::filesystem::create_directories(opts.out_dir, ec);
   if (ec || !std::filesystem::is_directory(opts.out_dir)) {
@@ -128,17 +157,7 @@ std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
 
   WriteFileAtomic((dir / "designs.csv").string(), SweepDesignsCsv(opts.params, results));
   WriteFileAtomic((dir / "runs.csv").string(), runs_csv);
-  if (opts.params.size() == 1 || opts.params.size() == 2) {
-    const SweepParam& px = opts.params.size() == 2 ? opts.params[1] : opts.params[0];
-    const bool two = opts.params.size() == 2;
-    const std::vector<std::string> yv = two ? opts.params[0].values : std::vector<std::string>{""};
-    for (const auto& m : SweepMetrics()) {
-      std::vector<double> cells;
-      for (const auto& r : results) cells.push_back(m.value(r));  // grid order = row-major (first key = rows)
-      WriteHeatmapSvg((dir / (m.name + ".svg")).string(), m.title, px.key, px.values, two ? opts.params[0].key : "",
-                      yv, cells, m.unit);
-    }
-  }
+  if (SweepDrawsHeatmaps(opts)) DrawHeatmaps(opts, (dir / "designs.csv").string());
   return results;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // `tactip sweep`: run a scenario over a grid of config values and score each design by
-// its incipient-slip figures (one CSV row per design, one heatmap per metric).
+// its incipient-slip figures (one CSV row per design, one PNG heatmap per metric).
 
 #include <atomic>
 #include <cstdint>
@@ -24,6 +24,7 @@ struct SweepOptions {
   std::uint64_t seed = 1;                   ///< master seed
   int jobs = 0;                             ///< worker threads per design (0 = all cores)
   std::string out_dir;                      ///< folder for designs.csv, runs.csv and the heatmaps
+  bool plots = true;                        ///< draw the heatmaps (PNG, matplotlib); false: CSVs only
   IncipientParams detector;                 ///< incipient detector parameters (hardware defaults)
   const std::atomic<bool>* stop = nullptr;  ///< cooperative interruption
   /// Called with the number of designs once every design is validated, before any runs.
@@ -44,7 +45,7 @@ struct SweepDesignResult {
   double wall_time_s = 0.0;
 };
 
-/// One scored metric of a sweep (a CSV column and a heatmap).
+/// One scored metric of a sweep (a CSV column and a heatmap `<name>.png`).
 struct SweepMetric {
   std::string name;   ///< CSV column and file stem
   std::string title;  ///< heatmap title
@@ -56,10 +57,17 @@ struct SweepMetric {
 /// slipping before gross slip, gross-slip signal strength, detector lead and miss rate.
 const std::vector<SweepMetric>& SweepMetrics();
 
-/// Validates every design's config first (throws InputError naming the design), then
-/// runs the designs in grid order, writing `designs.csv`, `runs.csv` and one heatmap per
-/// metric (SVG) into `out_dir` (created if missing). Heatmaps need 1 or 2 swept keys;
-/// with more, only the CSVs are written. `progress(done, total, result)` after each design.
+/// True when RunSweep draws heatmaps for these options: plots on and 1 or 2 swept keys.
+bool SweepDrawsHeatmaps(const SweepOptions& opts);
+
+/// Validates every design's config first (throws InputError naming the design) and, when
+/// it will draw heatmaps, checks the plotting tool (CheckPlotting: InputError before any
+/// run); then runs the designs in grid order, writing `designs.csv`, `runs.csv` and one
+/// heatmap per metric (`<metric>.png`, drawn by matplotlib from designs.csv) into
+/// `out_dir` (created if missing). Heatmaps need 1 or 2 swept keys; with more, or with
+/// opts.plots false, only the CSVs are written. A heatmap that fails after the runs throws
+/// PlotError (the CSVs are already written). `progress(done, total, result)` after each
+/// design.
 std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
                                         const std::function<void(int, int, const SweepDesignResult&)>& progress = {});
 

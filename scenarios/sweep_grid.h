@@ -1,6 +1,6 @@
 #pragma once
 // Generic design sweeps: `--param` specs (ranges, lists, single values) expanded into a
-// Cartesian grid of config overrides, and SVG heatmaps of one number per design.
+// Cartesian grid of config overrides.
 
 #include <string>
 #include <utility>
@@ -39,24 +39,5 @@ using SweepDesign = std::vector<std::pair<std::string, std::string>>;
 /// gives one design with no pairs. Throws InputError for a key swept twice, a parameter
 /// with no values or a grid larger than kMaxSweepDesigns.
 std::vector<SweepDesign> ExpandGrid(const std::vector<SweepParam>& params);
-
-/// A self-contained SVG heatmap: one coloured cell (<rect class="cell">) per value,
-/// coloured on a viridis scale between the smallest and largest finite value and labelled
-/// with the value to 3 significant digits (NaN: grey, "n/a"; infinities: grey, "inf"),
-/// tick labels from `x_values` (columns) and `y_values` (rows, first on top), axis
-/// labels, a title and a colour bar with min, max and `unit`. `cells` is row-major:
-/// cells[iy * x_values.size() + ix]. A single row (one empty y value, empty y label)
-/// draws as a 1-D strip with no y axis. All text is XML-escaped. Throws
-/// std::invalid_argument if either axis is empty or cells.size() != x * y.
-std::string HeatmapSvg(const std::string& title, const std::string& x_label, const std::vector<std::string>& x_values,
-                       const std::string& y_label, const std::vector<std::string>& y_values,
-                       const std::vector<double>& cells, const std::string& unit);
-
-/// Writes HeatmapSvg(...) to `path` atomically; throws as HeatmapSvg, or InputError
-/// naming the path if it cannot be written.
-void WriteHeatmapSvg(const std::string& path, const std::string& title, const std::string& x_label,
-                     const std::vector<std::string>& x_values, const std::string& y_label,
-                     const std::vector<std::string>& y_values, const std::vector<double>& cells,
-                     const std::string& unit);
 
 }  // namespace tactip

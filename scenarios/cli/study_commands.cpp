@@ -24,7 +24,7 @@ struct StudyArgs {
   int sweep_runs = 4, jobs = 0;
   unsigned long long seed = 1;
   std::string out;
-  bool quiet = false;
+  bool quiet = false, no_plots = false;
   IncipientParams sweep_detector;
   std::string report_what, report_path, report_csv;
   IncipientParams report_params;
@@ -122,6 +122,7 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
   o.seed = a.seed;
   o.jobs = a.jobs;
   o.out_dir = a.out.empty() ? "sweep" : a.out;
+  o.plots = !a.no_plots;
   o.detector = a.sweep_detector;
   o.stop = stop;
   if (!a.quiet) {
@@ -136,7 +137,7 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
   });
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::fprintf(stderr, "done: %zu designs in %.1f s; wrote %s/designs.csv, runs.csv%s\n", results.size(), wall,
-               o.out_dir.c_str(), o.params.size() <= 2 ? " and one heatmap per metric (*.svg)" : "");
+               o.out_dir.c_str(), SweepDrawsHeatmaps(o) ? " and one heatmap per metric (*.png)" : "");
   return 0;
 }
 
@@ -144,7 +145,7 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
 CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
   auto* c = app.add_subcommand("sweep",
                                "Run a scenario over a grid of config values; one CSV row per design with its "
-                               "incipient-slip figures and one heatmap (SVG) per metric.");
+                               "incipient-slip figures and one heatmap (PNG, drawn by matplotlib) per metric.");
   a.config.Add(c);
   c->add_option("--param", a.sweep_params,
                 "Swept key: KEY=START:STOP:STEP, KEY=A,B,C or KEY=V (repeatable; first varies slowest; heatmaps "
@@ -164,6 +165,7 @@ CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
   c->add_option("--count-thr", a.sweep_detector.count_thr, "Incipient detector I_thr (default 4).")
       ->check(CLI::Range(1, 100000));
   c->add_flag("--quiet", a.quiet, "No per-design progress lines.");
+  c->add_flag("--no-plots", a.no_plots, "Write the CSVs only: no heatmaps, no Python or matplotlib needed.");
   return c;
 }
 

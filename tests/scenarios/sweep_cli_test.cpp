@@ -1,5 +1,6 @@
-// `tactip sweep` end to end: one CSV row per design, heatmaps, exact reproduction with
-// the same seed, and bad grids rejected before anything runs.
+// `tactip sweep` end to end: one CSV row per design, PNG heatmaps, exact reproduction with
+// the same seed, --no-plots, and bad grids or a missing plotting tool rejected before
+// anything runs.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -10,12 +11,14 @@
 #include <vector>
 
 #include "cli_helpers.h"
+#include "png_check.h"
 
 namespace tactip {
 namespace {
 
 namespace fs = std::filesystem;
 using testing::CliResult;
+using testing::ReadPngInfo;
 using testing::RunTactip;
 using testing::Slurp;
 
@@ -29,6 +32,10 @@ class SweepCliTest : public ::testing::Test {
   CliResult Run(const std::string& args) { return RunTactip(args, dir_); }
   fs::path dir_;
 };
+
+/// The metrics drawn as heatmaps (`<metric>.png`).
+constexpr const char* kMetrics[] = {"lead_gross_mean_s",    "lead_gross_std_s",     "pre_slip_fraction",
+                                    "peak_speed_px",        "detector_lead_fall_s", "detector_miss_rate"};
 
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> out;
@@ -47,7 +54,7 @@ std::string WithoutLastColumns(const std::string& csv, int n) {
   return out;
 }
 
-TEST_F(SweepCliTest, GridGivesOneRowPerDesignHeatmapsAndReproducesExactly) {
+TEST_F(SweepCliTest, GridGivesOneRowPerDesignPngHeatmapsAndReproducesExactly) {
   const std::string args =
       "sweep incipient --param skin.thickness_mm=0.5,1 --param skin.ridge_spacing_mm=3,4 --runs 1 --quiet --out ";
   const CliResult a = Run(args + (dir_ / "a").string());
@@ -60,19 +67,40 @@ TEST_F(SweepCliTest, GridGivesOneRowPerDesignHeatmapsAndReproducesExactly) {
   EXPECT_EQ(rows[2].rfind("1,0.5,4,61,", 0), 0u) << rows[2];
   EXPECT_EQ(rows[4].rfind("3,1,4,61,", 0), 0u) << rows[4];
   EXPECT_EQ(Lines(Slurp(dir_ / "a" / "runs.csv")).size(), 5u);
-  for (const char* m : {"lead_gross_mean_s", "lead_gross_std_s", "pre_slip_fraction", "peak_speed_px",
-                        "detector_lead_fall_s", "detector_miss_rate"}) {
-    const std::string svg = Slurp(dir_ / "a" / (std::string(m) + ".svg"));
-    EXPECT_NE(svg.find("<svg"), std::string::npos) << m;
-    size_t cells = 0;
-    for (size_t p = svg.find("class=\"cell\""); p != std::string::npos; p = svg.find("class=\"cell\"", p + 1)) ++cells;
-    EXPECT_EQ(cells, 4u) << m;
+  for (const char* m : kMetrics) {
+    const auto png = ReadPngInfo(dir_ / "a" / (std::string(m) + ".png"));
+    EXPECT_GT(png.bytes, 5000u) << m << ": not a PNG or trivially small";
+    EXPECT_GE(png.width, 400u) << m;
   }
+  EXPECT_EQ(testing::TempFilesIn(dir_ / "a"), 0);
   // Same seed: identical figures (only the timing columns may differ).
   const CliResult b = Run(args + (dir_ / "b").string() + " --jobs 1");
   ASSERT_EQ(b.code, 0) << b.err;
   EXPECT_EQ(WithoutLastColumns(csv, 2), WithoutLastColumns(Slurp(dir_ / "b" / "designs.csv"), 2));
   EXPECT_EQ(Slurp(dir_ / "a" / "runs.csv"), Slurp(dir_ / "b" / "runs.csv"));
+}
+
+TEST_F(SweepCliTest, NoPlotsWritesTheCsvsOnly) {
+  // Plotting is not even checked: a missing interpreter does not matter.
+  ::setenv("TACTIP_PYTHON", "/nonexistent/python3", 1);
+  const CliResult r = Run("sweep incipient --param skin.thickness_mm=1 --runs 1 --quiet --no-plots --out " +
+                          (dir_ / "c").string());
+  ::unsetenv("TACTIP_PYTHON");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(Lines(Slurp(dir_ / "c" / "designs.csv")).size(), 2u);
+  for (const char* m : kMetrics) EXPECT_FALSE(fs::exists(dir_ / "c" / (std::string(m) + ".png"))) << m;
+}
+
+TEST_F(SweepCliTest, MissingMatplotlibFailsBeforeAnythingRuns) {
+  ::setenv("TACTIP_PYTHON", "/nonexistent/python3", 1);
+  const CliResult r = Run("sweep incipient --param skin.thickness_mm=1 --runs 1 --out " + (dir_ / "d").string());
+  ::unsetenv("TACTIP_PYTHON");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("plots need python3 with matplotlib"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--no-plots"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_EQ(r.err.find("sweeping"), std::string::npos) << "runs started: " << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "d" / "designs.csv"));
 }
 
 TEST_F(SweepCliTest, InvalidDesignIsRejectedBeforeAnythingRuns) {

@@ -1,30 +1,18 @@
-// Design sweeps: --param specs, the Cartesian grid and the SVG heatmap.
+// Design sweeps: --param specs and the Cartesian grid.
 
 #include "scenarios/sweep_grid.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <fstream>
-#include <iterator>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "detectors/scratch.h"
 #include "sim/config.h"
 
 namespace tactip {
 namespace {
 
 using Values = std::vector<std::string>;
-
-/// Occurrences of `needle` in `text`.
-size_t Count(const std::string& text, const std::string& needle) {
-  size_t n = 0;
-  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + needle.size())) ++n;
-  return n;
-}
 
 /// The InputError message ParseSweepParam throws for `spec` ("" if it does not throw).
 std::string ParseError(const std::string& spec) {
@@ -130,67 +118,6 @@ TEST(ExpandGridTest, RejectsDuplicateKeysEmptyParamsAndHugeGrids) {
   EXPECT_THROW(ExpandGrid({SweepParam{"a", {}}}), InputError);
   const SweepParam big = ParseSweepParam("a=1:1000:1");
   EXPECT_THROW(ExpandGrid({big, SweepParam{"b", big.values}}), InputError);
-}
-
-TEST(HeatmapSvgTest, OneCellPerValueWithNaNShownAsNA) {
-  const std::vector<double> cells = {0.1, 0.2, 0.3, NAN, 0.5, 0.6};  // 2 rows x 3 columns
-  const std::string svg = HeatmapSvg("F1 by design", "ridge spacing (mm)", {"2", "2.5", "3"}, "thickness (mm)",
-                                     {"0.3", "0.6"}, cells, "F1");
-  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
-  EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  EXPECT_EQ(Count(svg, "<rect class=\"cell\""), cells.size());
-  EXPECT_EQ(Count(svg, ">n/a<"), 1u);
-  EXPECT_NE(svg.find(">0.5<"), std::string::npos);
-  EXPECT_NE(svg.find(">0.1<"), std::string::npos);  // colour bar min
-  EXPECT_NE(svg.find(">0.6<"), std::string::npos);  // colour bar max
-  EXPECT_NE(svg.find(">ridge spacing (mm)<"), std::string::npos);
-  EXPECT_NE(svg.find(">thickness (mm)<"), std::string::npos);
-  EXPECT_NE(svg.find(">2.5<"), std::string::npos);
-  EXPECT_NE(svg.find("#440154"), std::string::npos);  // min cell: viridis' dark end
-  EXPECT_NE(svg.find("#fde725"), std::string::npos);  // max cell: viridis' yellow end
-}
-
-TEST(HeatmapSvgTest, ValuesHaveThreeSignificantDigits) {
-  const std::string svg = HeatmapSvg("t", "x", {"a", "b"}, "", {""}, {1.23456, 12345.6}, "");
-  EXPECT_NE(svg.find(">1.23<"), std::string::npos);
-  EXPECT_NE(svg.find(">1.23e+04<"), std::string::npos);
-}
-
-TEST(HeatmapSvgTest, EscapesText) {
-  const std::string svg = HeatmapSvg("F1 <best> & \"worst\"", "x<1", {"a<b"}, "y&z", {"'q'"}, {1.0}, "<unit>");
-  EXPECT_NE(svg.find("F1 &lt;best&gt; &amp; &quot;worst&quot;"), std::string::npos);
-  EXPECT_NE(svg.find("x&lt;1"), std::string::npos);
-  EXPECT_NE(svg.find("a&lt;b"), std::string::npos);
-  EXPECT_NE(svg.find("y&amp;z"), std::string::npos);
-  EXPECT_NE(svg.find("&apos;q&apos;"), std::string::npos);
-  EXPECT_NE(svg.find("&lt;unit&gt;"), std::string::npos);
-  EXPECT_EQ(svg.find("<best>"), std::string::npos);
-  EXPECT_EQ(svg.find("<unit>"), std::string::npos);
-}
-
-TEST(HeatmapSvgTest, OneDimensionalAndDegenerateScales) {
-  // A single row with no y axis; all values equal; all NaN.
-  const std::string strip = HeatmapSvg("", "pattern", {"smooth", "fingerprint-v2"}, "", {""}, {0.8, 0.8}, "F1");
-  EXPECT_EQ(Count(strip, "<rect class=\"cell\""), 2u);
-  EXPECT_EQ(Count(strip, ">0.8<"), 4u);  // two cells, bar min and bar max
-  const std::string none = HeatmapSvg("t", "x", {"a"}, "y", {"b"}, {NAN}, "");
-  EXPECT_EQ(Count(none, "<rect class=\"cell\""), 1u);
-  EXPECT_GE(Count(none, ">n/a<"), 1u);
-}
-
-TEST(HeatmapSvgTest, SizeMismatchThrows) {
-  EXPECT_THROW(HeatmapSvg("t", "x", {"a", "b"}, "y", {"c", "d"}, {1, 2, 3}, ""), std::invalid_argument);
-  EXPECT_THROW(HeatmapSvg("t", "x", {}, "y", {}, {}, ""), std::invalid_argument);
-}
-
-TEST(HeatmapSvgTest, WritesTheFile) {
-  const std::string path = testing::TempPath("map.svg");
-  WriteHeatmapSvg(path, "t", "x", {"a", "b"}, "y", {"c"}, {1, 2}, "N");
-  const std::string text = [&] {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }();
-  EXPECT_EQ(text, HeatmapSvg("t", "x", {"a", "b"}, "y", {"c"}, {1, 2}, "N"));
 }
 
 }  // namespace
