@@ -3,10 +3,12 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "scenarios/cli/common.h"
+#include "scenarios/dataset_merge.h"
 #include "sim/files.h"
 
 namespace tactip::cli {
@@ -21,6 +23,7 @@ struct ScenarioArgs {
   unsigned long long seed = 1;
   bool quiet = false;
   std::string shard;                      // --shard i/n ("" = the whole job)
+  std::vector<std::string> merge_inputs;  // shard files to merge
   std::string info_path;
   bool no_config = false;
   bool as_yaml = false, with_comments = false;
@@ -100,6 +103,21 @@ int RunGenerate(const ScenarioEntry& entry, const ConfigSource& src, const Scena
   return 0;
 }
 
+// tactip merge: join shard files into the whole job's dataset, then print its summary.
+int RunMerge(const ScenarioArgs& a, const std::atomic<bool>* stop) {
+  MergeOptions opts;
+  opts.stop = stop;
+  if (!a.quiet) {
+    opts.progress = [](const std::string& path, const ShardSpec& s) {
+      std::fprintf(stderr, "merged %s: shard %s, %s\n", path.c_str(), s.text().c_str(), s.runs_text().c_str());
+    };
+  }
+  const MergeResult r = MergeShards(a.merge_inputs, a.out, opts);
+  std::fprintf(stderr, "done: %d runs from %d shard file(s) into %s\n", r.runs, r.shards, a.out.c_str());
+  PrintDatasetSummary(a.out, false);
+  return 0;
+}
+
 }  // namespace
 
 std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>* stop) {
@@ -120,6 +138,14 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
       ->type_name("i/n");
   gen->add_flag("--quiet", a->quiet, "No per-run progress lines.");
 
+  auto* merge = app.add_subcommand(
+      "merge", "Join shard files (generate --shard i/n) into the dataset one machine writes for the whole job.");
+  merge->add_option("files", a->merge_inputs, "Shard files, any order; together they must hold every run once.")
+      ->required();
+  merge->add_option("--out", a->out, "Output HDF5 file; written atomically; must not be one of the inputs.")
+      ->required();
+  merge->add_flag("--quiet", a->quiet, "No per-shard progress lines.");
+
   auto* info = app.add_subcommand("info", "Show the runs, frames, slip onsets and config of a dataset.");
   info->add_option("file", a->info_path, "HDF5 dataset written by 'tactip generate'.")->required();
   info->add_flag("--no-config", a->no_config, "Do not print the stored config.");
@@ -133,7 +159,8 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
   cfg->add_flag("--yaml", a->as_yaml, "Print the resolved config as YAML instead of the table.");
   cfg->add_flag("--comments", a->with_comments, "With --yaml: each key's meaning and unit as a comment above it.");
 
-  return [a, list, gen, info, exp, cfg, stop]() -> int {
+  return [a, list, gen, merge, info, exp, cfg, stop]() -> int {
+    if (*merge) return RunMerge(*a, stop);
     if (*list) {
       for (const auto& s : Scenarios()) std::printf("%-12s %s\n", s.name.c_str(), s.description.c_str());
       return 0;
