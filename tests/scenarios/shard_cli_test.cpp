@@ -217,6 +217,12 @@ TEST_F(ShardCliTest, SyntheticShardsMergeToTheFileWrittenInOneGo) {
   const CliResult r = Run("merge " + P("c.h5") + " " + P("a.h5") + " " + P("b.h5") + " --out " + P("all.h5"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(Slurp(P("all.h5")) == Slurp(P("one.h5")));
+  // Shards of different counts merge too when their blocks tile the job: 0/3, 1/3 and 1/2.
+  WriteJobShard(P("half.h5"), 1, 2);
+  const CliResult mixed =
+      Run("merge " + P("half.h5") + " " + P("b.h5") + " " + P("a.h5") + " --out " + P("mixed.h5"));
+  ASSERT_EQ(mixed.code, 0) << mixed.err;
+  EXPECT_TRUE(Slurp(P("mixed.h5")) == Slurp(P("one.h5")));
 }
 
 TEST_F(ShardCliTest, MergeRefusesWithOneLineNamingTheFileAndLeavesTheOutputUntouched) {
