@@ -136,7 +136,7 @@ std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
     const double c_tip = configs[i].skin.coupling == "membrane" ? mech.TipDamping(configs[i].sim.timestep_s)
                                                                  : mech.tip_damping_Ns_m;
     r.shear_relaxation_s = c_tip / mech.k_tip_N_m;
-    RunRailRuns(scenario, opts.runs, opts.seed, opts.jobs, opts.stop, [&](RunRecord&& rec, const RailRunSummary& s) {
+    RunRailRuns(scenario, 0, opts.runs, opts.seed, opts.jobs, opts.stop, [&](RunRecord&& rec, const RailRunSummary& s) {
       r.runs.push_back(AnalyzeIncipientRun(rec, opts.detector));
       r.sim_time_s += s.sim_time_s;
     });

@@ -405,6 +405,12 @@ DatasetWriter::DatasetWriter(const std::string& path, const DatasetHeader& heade
   WriteStringAttr(root, "scenario", header.scenario, "/", im.err);
   WriteScalarAttr(root, "seed", H5T_STD_U64LE, H5T_NATIVE_UINT64, &header.seed, "/", im.err);
   WriteStringAttr(root, "config_yaml", header.config_yaml, "/", im.err);
+  if (header.shard) {
+    // Shard files only, after the common attributes: a merged file has none of these.
+    const std::uint64_t runs_total = static_cast<std::uint64_t>(header.shard->runs_total);
+    WriteStringAttr(root, "shard", header.shard->text(), "/", im.err);
+    WriteScalarAttr(root, "runs_total", H5T_STD_U64LE, H5T_NATIVE_UINT64, &runs_total, "/", im.err);
+  }
   im.runs = CreateGroup(root, "runs", "/runs", im.err);
 }
 
@@ -554,6 +560,29 @@ struct DatasetReader::Impl {
     return value;
   }
 
+  /// Reads the optional shard attributes (`shard` = "i/n" with `runs_total` = R), which
+  /// must be present together and consistent.
+  std::optional<ShardSpec> RootShard() const {
+    if (H5Aexists(file.get(), "shard") <= 0) {
+      if (H5Aexists(file.get(), "runs_total") > 0) {
+        throw InputError(Name() + " has root attribute 'runs_total' but no 'shard'");
+      }
+      return std::nullopt;
+    }
+    const std::string text = RootString("shard");
+    const std::uint64_t runs_total = RootUint64("runs_total");
+    if (runs_total < 1 || runs_total > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+      throw InputError(Name() + ": root attribute 'runs_total' = " + std::to_string(runs_total) +
+                       " is out of range");
+    }
+    ShardSpec spec;
+    const std::string problem = ParseShard(text, static_cast<int>(runs_total), spec);
+    if (!problem.empty()) {
+      throw InputError(Name() + ": root attribute 'shard' = '" + text + "' is invalid: " + problem);
+    }
+    return spec;
+  }
+
   /// Opens group /runs/run_NNNN; `runs` lists the indices present.
   Hid OpenRun(int index, const std::vector<int>& present) const {
     const std::string name = RunGroupName(index);
@@ -682,6 +711,7 @@ DatasetReader::DatasetReader(const std::string& path) : impl_(std::make_unique<I
   header_.scenario = im.RootString("scenario");
   header_.seed = im.RootUint64("seed");
   header_.config_yaml = im.RootString("config_yaml");
+  header_.shard = im.RootShard();
 
   // Runs: children of /runs named run_NNNN, ascending.
   if (H5Lexists(im.file.get(), "runs", H5P_DEFAULT) <= 0) throw InputError(im.Name() + " has no group /runs");

@@ -5,8 +5,11 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "sensors/shard.h"
 
 namespace tactip {
 
@@ -16,6 +19,9 @@ struct DatasetHeader {
   std::string scenario;        ///< scenario name, e.g. "rail"
   std::uint64_t seed = 0;      ///< master seed; run i uses a seed derived from it
   std::string config_yaml;     ///< full resolved config
+  /// Set in shard files only: which part of which job the file holds (root attributes
+  /// `shard` = "i/n" and `runs_total` = R); `tactip merge` joins shards into one dataset.
+  std::optional<ShardSpec> shard;
 };
 
 /// One recorded run. Arrays are row-major; T frames, N pins.

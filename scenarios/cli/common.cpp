@@ -50,6 +50,10 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
   std::printf("dataset      %s\n", path.c_str());
   std::printf("scenario     %s (tactip %s, seed %llu)\n", h.scenario.c_str(), h.tactip_version.c_str(),
               static_cast<unsigned long long>(h.seed));
+  if (h.shard) {
+    std::printf("shard        %s: %s ('tactip merge' joins the shards)\n", h.shard->text().c_str(),
+                h.shard->runs_text().c_str());
+  }
   std::printf("runs         %zu\n", runs.size());
   std::printf("%5s %7s %9s %10s %10s %10s %8s %9s %8s %9s\n", "run", "frames", "length_s", "onset_s", "fall_s",
               "coulomb_s", "mu", "depth_mm", "v_mm_s", "creep_um");

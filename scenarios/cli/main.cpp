@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   }
   // Long simulations stop cleanly on Ctrl-C; other commands keep the default handling
   // (their outputs are written atomically at the end).
-  for (const char* name : {"generate", "sweep", "bench"}) {
+  for (const char* name : {"generate", "merge", "sweep", "bench"}) {
     if (app.got_subcommand(name)) {
       std::signal(SIGINT, OnSignal);
       std::signal(SIGTERM, OnSignal);

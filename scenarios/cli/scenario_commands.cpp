@@ -3,10 +3,12 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "scenarios/cli/common.h"
+#include "scenarios/dataset_merge.h"
 #include "sim/files.h"
 
 namespace tactip::cli {
@@ -20,6 +22,8 @@ struct ScenarioArgs {
   int runs = 4, jobs = 0;
   unsigned long long seed = 1;
   bool quiet = false;
+  std::string shard;                      // --shard i/n ("" = the whole job)
+  std::vector<std::string> merge_inputs;  // shard files to merge
   std::string info_path;
   bool no_config = false;
   bool as_yaml = false, with_comments = false;
@@ -76,6 +80,7 @@ int RunGenerate(const ScenarioEntry& entry, const ConfigSource& src, const Scena
   entry.describe(src);  // validates the config before anything is printed or written
   GenerateOptions opts;
   opts.out_path = a.out.empty() ? entry.name + ".h5" : a.out;
+  if (!a.shard.empty()) opts.shard = ParseShardOption(a.shard, a.runs);
   CheckWritableLocation(opts.out_path);
   opts.runs = a.runs;
   opts.seed = a.seed;
@@ -84,12 +89,32 @@ int RunGenerate(const ScenarioEntry& entry, const ConfigSource& src, const Scena
   opts.stop = stop;
   if (!a.quiet) {
     opts.progress = PrintRunProgress;
-    std::fprintf(stderr, "generating %d %s run(s) into %s\n", a.runs, entry.name.c_str(), opts.out_path.c_str());
+    if (opts.shard) {
+      std::fprintf(stderr, "generating shard %s: %s %s into %s\n", opts.shard->text().c_str(),
+                   entry.name.c_str(), opts.shard->runs_text().c_str(), opts.out_path.c_str());
+    } else {
+      std::fprintf(stderr, "generating %d %s run(s) into %s\n", a.runs, entry.name.c_str(), opts.out_path.c_str());
+    }
   }
   const GenerateResult r = entry.generate(src, opts);
   std::fprintf(stderr, "done: %d runs, %.1f s simulated in %.1f s wall (%.1fx real time overall)\n", r.runs,
                r.sim_time_s, r.wall_time_s, r.sim_time_s / r.wall_time_s);
   PrintDatasetSummary(opts.out_path, false);
+  return 0;
+}
+
+// tactip merge: join shard files into the whole job's dataset, then print its summary.
+int RunMerge(const ScenarioArgs& a, const std::atomic<bool>* stop) {
+  MergeOptions opts;
+  opts.stop = stop;
+  if (!a.quiet) {
+    opts.progress = [](const std::string& path, const ShardSpec& s) {
+      std::fprintf(stderr, "merged %s: shard %s, %s\n", path.c_str(), s.text().c_str(), s.runs_text().c_str());
+    };
+  }
+  const MergeResult r = MergeShards(a.merge_inputs, a.out, opts);
+  std::fprintf(stderr, "done: %d runs from %d shard file(s) into %s\n", r.runs, r.shards, a.out.c_str());
+  PrintDatasetSummary(a.out, false);
   return 0;
 }
 
@@ -107,7 +132,19 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
   gen->add_option("--out", a->out, "Output HDF5 file (default SCENARIO.h5); written atomically.");
   gen->add_option("--jobs", a->jobs, "Worker threads (default: all cores); results do not depend on it.")
       ->check(CLI::Range(0, 256));
+  gen->add_option("--shard", a->shard,
+                  "Simulate only shard i of n: runs floor(i*R/n) to floor((i+1)*R/n)-1 of the R = --runs runs, "
+                  "bit-identical to the same runs of the whole job; join the shard files with 'tactip merge'.")
+      ->type_name("i/n");
   gen->add_flag("--quiet", a->quiet, "No per-run progress lines.");
+
+  auto* merge = app.add_subcommand(
+      "merge", "Join shard files (generate --shard i/n) into the dataset one machine writes for the whole job.");
+  merge->add_option("files", a->merge_inputs, "Shard files, any order; together they must hold every run once.")
+      ->required();
+  merge->add_option("--out", a->out, "Output HDF5 file; written atomically; must not be one of the inputs.")
+      ->required();
+  merge->add_flag("--quiet", a->quiet, "No per-shard progress lines.");
 
   auto* info = app.add_subcommand("info", "Show the runs, frames, slip onsets and config of a dataset.");
   info->add_option("file", a->info_path, "HDF5 dataset written by 'tactip generate'.")->required();
@@ -122,7 +159,8 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
   cfg->add_flag("--yaml", a->as_yaml, "Print the resolved config as YAML instead of the table.");
   cfg->add_flag("--comments", a->with_comments, "With --yaml: each key's meaning and unit as a comment above it.");
 
-  return [a, list, gen, info, exp, cfg, stop]() -> int {
+  return [a, list, gen, merge, info, exp, cfg, stop]() -> int {
+    if (*merge) return RunMerge(*a, stop);
     if (*list) {
       for (const auto& s : Scenarios()) std::printf("%-12s %s\n", s.name.c_str(), s.description.c_str());
       return 0;

@@ -1,5 +1,5 @@
 #pragma once
-// The scenario subcommands of `tactip`: scenarios, generate, info, export-mjcf, config.
+// The scenario subcommands of `tactip`: scenarios, generate, merge, info, export-mjcf, config.
 
 #include <CLI/CLI.hpp>
 

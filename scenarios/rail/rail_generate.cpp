@@ -13,7 +13,7 @@
 
 namespace tactip {
 
-void RunRailRuns(const RailScenario& scenario, int runs, std::uint64_t seed, int jobs_requested,
+void RunRailRuns(const RailScenario& scenario, int first, int runs, std::uint64_t seed, int jobs_requested,
                  const std::atomic<bool>* stop, const std::function<void(RunRecord&&, const RailRunSummary&)>& take) {
   // Workers take run indices in order; this thread hands them to `take` in order.
   const int jobs = std::max(
@@ -37,7 +37,7 @@ void RunRailRuns(const RailScenario& scenario, int runs, std::uint64_t seed, int
       }
       try {
         RunRecord rec;
-        const RailRunSummary s = scenario.Run(idx, seed, rec, &abort);
+        const RailRunSummary s = scenario.Run(first + idx, seed, rec, &abort);
         std::lock_guard lock(mu);
         done.emplace(idx, std::move(rec));
         summaries.emplace(idx, s);
@@ -89,6 +89,16 @@ void RunRailRuns(const RailScenario& scenario, int runs, std::uint64_t seed, int
 GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const GenerateOptions& opts) {
   if (opts.runs < 1) throw InputError(fmt::format("--runs = {}: must be >= 1", opts.runs));
   if (opts.out_path.empty()) throw InputError("no output file given (--out)");
+  if (opts.shard) {
+    // The shard must be one of this job's (same R) and keep its rules.
+    if (opts.shard->runs_total != opts.runs) {
+      throw InputError(fmt::format("--shard {} is of a {}-run job, but --runs = {}", opts.shard->text(),
+                                   opts.shard->runs_total, opts.runs));
+    }
+    ParseShardOption(opts.shard->text(), opts.runs);
+  }
+  const int first = opts.shard ? opts.shard->first_run() : 0;
+  const int count = opts.shard ? opts.shard->end_run() - first : opts.runs;
   const RailScenario scenario(cfg);
   const auto wall0 = std::chrono::steady_clock::now();
 
@@ -97,14 +107,15 @@ GenerateResult GenerateRailDataset(const RailScenarioConfig& cfg, const Generate
   header.scenario = opts.scenario;
   header.seed = opts.seed;
   header.config_yaml = ConfigToYaml(scenario.config());
+  header.shard = opts.shard;
   DatasetWriter writer(opts.out_path, header);
 
   GenerateResult result;
-  RunRailRuns(scenario, opts.runs, opts.seed, opts.jobs, opts.stop, [&](RunRecord&& rec, const RailRunSummary& s) {
+  RunRailRuns(scenario, first, count, opts.seed, opts.jobs, opts.stop, [&](RunRecord&& rec, const RailRunSummary& s) {
     writer.WriteRun(rec);
     result.sim_time_s += s.sim_time_s;
     ++result.runs;
-    if (opts.progress) opts.progress(result.runs, opts.runs, rec.index, s);
+    if (opts.progress) opts.progress(result.runs, count, rec.index, s);
   });
   writer.Commit();
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
