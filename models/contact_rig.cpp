@@ -14,7 +14,7 @@ std::string BuildContactRig(const ContactRigSpec& spec) {
   const auto collidable = RailCollidablePins(spec.skin, lattice, flat, spec.max_depth_m);
   SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s);
 
-  mjcf::Element root = SceneRoot("tactip_contact_rig", spec.sim, 0.0, skin.n_collidable);
+  mjcf::Element root = SceneRoot("tactip_contact_rig", spec.sim, spec.contact, 0.0, skin.n_collidable);
 
   mjcf::Element& world = root.Add("worldbody");
   // Sensor fixed in the world, dome centre at x = -R so the apex is at x = 0.
@@ -46,7 +46,7 @@ std::string BuildContactRig(const ContactRigSpec& spec) {
       .SetInt("condim", 3)
       .Set("friction", std::vector<double>{spec.contact.friction, 0.005, 0.0001})
       .Set("solref", std::vector<double>{spec.contact.timeconst_s, 1.0})
-      .Set("solimp", std::vector<double>{spec.contact.impedance, spec.contact.impedance, 0.001, 0.5, 2});
+      .Set("solimp", spec.contact.Solimp());
 
   if (!skin.tendons.empty()) {
     mjcf::Element& tendon = root.Add("tendon");

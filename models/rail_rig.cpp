@@ -53,9 +53,11 @@ double SensorMassKg(const SkinMechanics& mech, size_t n_pins) {
 }
 }  // namespace
 
-mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, double gravity_z, int n_collidable) {
+mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
+                        double gravity_z, int n_collidable) {
   mjcf::Element root("mujoco");
   root.Set("model", model_name);
+  const bool exact_noslip = sim.noslip == "exact" && sim.noslip_iterations > 0;
   root.Add("compiler").Set("angle", "radian").Set("inertiafromgeom", "false");
   root.Add("option")
       .Set("timestep", sim.timestep_s)
@@ -66,14 +68,26 @@ mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, dou
       .Set("impratio", sim.impratio)
       .SetInt("iterations", sim.iterations)
       .Set("tolerance", sim.tolerance)
-      .SetInt("noslip_iterations", sim.noslip_iterations)
+      .SetInt("noslip_iterations", exact_noslip ? 0 : sim.noslip_iterations)
       .Set("noslip_tolerance", sim.noslip_tolerance)
       .Set("gravity", V3(0, 0, gravity_z));
   // Contact budget: one contact per collidable pin plus spare; constraint rows for
   // condim-3 contacts (3 elliptic, 4 pyramidal) plus joint limits and dry friction.
   const int nconmax = n_collidable + 8;
   const int rows_per_contact = sim.cone == "pyramidal" ? 4 : 3;
-  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16);
+  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16).SetInt("nuser_jnt", 1);
+  if (exact_noslip) {
+    // tactip's friction pass runs outside MuJoCo (tactip's Simulation reads this numeric);
+    // a plain MuJoCo program loading this file runs without it, so its contacts creep.
+    root.Comment(fmt::format("sim.noslip = exact: tactip replaces MuJoCo's noslip pass by its friction pass ({} rounds, "
+                             "pre-sliding {} mm); plain MuJoCo runs this model without it",
+                             sim.noslip_iterations, contact.presliding_mm));
+    root.Add("custom")
+        .Add("numeric")
+        .Set("name", kFrictionPassNumeric)
+        .SetInt("size", 2)
+        .Set("data", std::vector<double>{static_cast<double>(sim.noslip_iterations), contact.presliding_mm * 1e-3});
+  }
   return root;
 }
 
@@ -114,7 +128,7 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s);
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
 
-  mjcf::Element root = SceneRoot("tactip_rail", spec.sim, -9.81, skin.n_collidable);
+  mjcf::Element root = SceneRoot("tactip_rail", spec.sim, spec.contact, -9.81, skin.n_collidable);
 
   mjcf::Element& world = root.Add("worldbody");
   world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
@@ -150,7 +164,7 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
       .SetInt("condim", 3)
       .Set("friction", friction)
       .Set("solref", std::vector<double>{spec.contact.timeconst_s, 1.0})
-      .Set("solimp", std::vector<double>{spec.contact.impedance, spec.contact.impedance, 0.001, 0.5, 2})
+      .Set("solimp", spec.contact.Solimp())
       .Set("rgba", std::vector<double>{0.85, 0.6, 0.2, 1});
   const double Rc = spec.rail.StimulusRadiusM();
   if (Rc == 0.0) {

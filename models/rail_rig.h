@@ -124,7 +124,8 @@ std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& l
 
 /// A scene root: model name, compiler settings, solver options from `sim`, and a contact
 /// budget for `n_collidable` pin contacts plus spare (rows sized for the cone type).
-mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, double gravity_z, int n_collidable);
+mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
+                        double gravity_z, int n_collidable);
 
 /// Everything a rail scene is built from.
 struct RailSceneSpec {

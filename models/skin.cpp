@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "sim/friction_plane.h"
+
 namespace tactip {
 
 namespace {
@@ -32,6 +34,12 @@ std::vector<std::string> SkinPreset(const std::string& name) {
             "skin.pin_length_mm=1",        "skin.pins_per_ring=6",     "skin.pattern_radius_mm=18"};
   }
   throw InputError("--skin '" + name + "': unknown skin (known: smooth, fingerprint-v1, fingerprint-v2)");
+}
+
+void ContactConfig::ValidateRules() const {
+  if (impedance_min > impedance) {
+    FailRule("contact.impedance_min", impedance_min, fmt::format("must be <= contact.impedance = {}", impedance));
+  }
 }
 
 void SkinConfig::ValidateRules() const {
@@ -341,6 +349,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     if (normal_dof[i]) {
       b.Add("joint")
           .Set("name", SkinNames::PinJoint(i))
+          .Set("user", std::vector<double>{kCompressionJointUser})
           .Set("type", "slide")
           .Set("axis", std::vector<double>{1, 0, 0})
           .Set("stiffness", mech.k_normal_N_m)
@@ -367,7 +376,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
           .SetInt("condim", 3)
           .Set("friction", std::vector<double>{contact.friction, 0.005, 0.0001})
           .Set("solref", std::vector<double>{contact.timeconst_s, 1.0})
-          .Set("solimp", std::vector<double>{contact.impedance, contact.impedance, 0.001, 0.5, 2})
+          .Set("solimp", contact.Solimp())
           .Set("rgba", std::vector<double>{0.9, 0.9, 0.9, 1});
       ++part.n_collidable;
     }

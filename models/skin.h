@@ -123,7 +123,10 @@ struct ContactConfig {
   double pin_friction_spread = 0.0; ///< per-pin relative perturbation of the friction (uniform +-)
   double weakening_speed_mm_s = 0.0;///< velocity-weakening scale v_c (0 = switch at the slip tolerance)
   double timeconst_s = 0.004;       ///< contact softness time constant
-  double impedance = 0.99;          ///< contact impedance d (solimp), closer to 1 = harder
+  double impedance = 0.99;          ///< contact impedance d (solimp dmax), closer to 1 = harder
+  double impedance_min = 0.5;       ///< impedance at zero penetration (solimp dmin)
+  double impedance_width_mm = 0.02; ///< penetration over which the impedance rises to `impedance` (solimp width)
+  double presliding_mm = 0.01;      ///< tangential give of a sticking contact at the Coulomb limit (sim.noslip = exact)
 
   template <class V>
   void Visit(V& v) {
@@ -152,10 +155,31 @@ struct ContactConfig {
       "is ~30x stiffer than a pin's gel spring, so the gel, not the solver, sets the indentation.",
       Bounds::Closed(1e-4, 0.1));
     v("impedance", impedance, "",
-      "MuJoCo contact impedance d in (0,1) (solimp dmin = dmax); steady penetration scales with (1-d)/d.",
+      "MuJoCo contact impedance d in (0,1) once the contact has penetrated impedance_width_mm (solimp dmax); "
+      "steady penetration scales with (1-d)/d.",
       Bounds::Closed(0.5, 0.9999));
+    v("impedance_min", impedance_min, "",
+      "Contact impedance at zero penetration (solimp dmin). Contacts are found at the start of a step, so a pin "
+      "that loses contact for one step is launched by its preload; a soft onset keeps the contact's stiffness at "
+      "touch-down within the step's reach (contact mode omega_0 dt < 2, see 'Numerical stability').",
+      Bounds::Closed(0.01, 0.9999));
+    v("impedance_width_mm", impedance_width_mm, "mm",
+      "Penetration over which the impedance rises from impedance_min to impedance (solimp width). Small against "
+      "the loaded pins' penetration (~35 um), so they sit at the full impedance.",
+      Bounds::Closed(1e-4, 1.0));
+    v("presliding_mm", presliding_mm, "mm",
+      "Pre-sliding displacement: a sticking contact gives elastically along its surface and reaches the Coulomb "
+      "limit mu N at this displacement (tangential stiffness mu N / presliding, so every contact's friction "
+      "is used in proportion to its normal force). Lets a contact compress along a sloped surface without "
+      "sliding. 0 = rigid stick. Used by the friction pass (sim.noslip = exact).",
+      Bounds::Closed(0.0, 1.0));
   }
-  void ValidateRules() const {}
+  /// impedance_min must not exceed impedance.
+  void ValidateRules() const;
+  /// The MJCF solimp vector of a contact geom.
+  std::vector<double> Solimp() const {
+    return {impedance_min, impedance, impedance_width_mm * 1e-3, 0.5, 2.0};
+  }
   /// Velocity-weakened coefficient of a pin with static coefficient mu_s sliding at
   /// slip_speed_m_s (needs weakening_speed_mm_s > 0): mu_s at rest, kinetic_ratio * mu_s
   /// when fast, halfway at the weakening speed.

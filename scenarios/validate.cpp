@@ -167,9 +167,77 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
   return out;
 }
 
+namespace {
+
+// One segment of the quasi-static solution between two releases: with the stuck set S
+// fixed, every force is affine in the plate displacement delta. Returns the segment
+// (Q = q0 + q1 delta) and the next pin to release (or -1) at displacement `*release_at`.
+// Rigid stick (presliding 0): stuck pins move with the plate. Otherwise each stuck pin is
+// tied to the plate by its pre-sliding spring mu N_i / presliding, as in the friction pass.
+struct Segment {
+  double delta0, q0, q1;
+};
+
+Segment SolveSegment(const Eigen::MatrixXd& K, const std::vector<double>& normal_N, double mu, double presliding_m,
+                     const std::vector<std::uint8_t>& stuck, const std::vector<std::uint8_t>& slipped, double delta,
+                     int* release, double* release_at) {
+  const int n = static_cast<int>(K.rows());
+  // Unknown pins U (all pins, or the unstuck ones under rigid stick): K_UU u = b + delta k.
+  std::vector<int> U;
+  for (int i = 0; i < n; ++i) {
+    if (presliding_m > 0.0 || !stuck[i]) U.push_back(i);
+  }
+  const auto spring = [&](int i) { return stuck[i] && presliding_m > 0.0 ? mu * normal_N[i] / presliding_m : 0.0; };
+  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(U.size())), x1 = x0;
+  if (!U.empty()) {
+    Eigen::MatrixXd Kuu(U.size(), U.size());
+    Eigen::VectorXd b(U.size()), k(U.size());
+    for (size_t a = 0; a < U.size(); ++a) {
+      b(a) = slipped[U[a]] ? mu * normal_N[U[a]] : 0.0;
+      k(a) = spring(U[a]);
+      for (int j = 0; j < n; ++j) {
+        if (presliding_m <= 0.0 && stuck[j]) k(a) -= K(U[a], j);
+      }
+      for (size_t c = 0; c < U.size(); ++c) Kuu(a, c) = K(U[a], U[c]);
+      Kuu(a, a) += spring(U[a]);
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(Kuu);
+    x0 = ldlt.solve(b);
+    x1 = ldlt.solve(k);
+  }
+  std::vector<double> u0(n, 0.0), u1(n, 0.0);  // u_i = u0 + delta u1
+  for (size_t a = 0; a < U.size(); ++a) u0[U[a]] = x0(a), u1[U[a]] = x1(a);
+  for (int i = 0; i < n; ++i) {
+    if (presliding_m <= 0.0 && stuck[i]) u1[i] = 1.0;
+  }
+  // Each stuck pin's friction f = f0 + delta f1: its spring, or (rigid) the lattice's pull.
+  Segment seg{delta, 0.0, 0.0};
+  *release = -1;
+  *release_at = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    if (slipped[i]) seg.q0 += mu * normal_N[i];
+    if (!stuck[i]) continue;
+    double f0 = 0.0, f1 = 0.0;
+    if (presliding_m > 0.0) {
+      f0 = -spring(i) * u0[i];
+      f1 = spring(i) * (1.0 - u1[i]);
+    } else {
+      for (int j = 0; j < n; ++j) f0 += K(i, j) * u0[j], f1 += K(i, j) * u1[j];
+    }
+    seg.q0 += f0;
+    seg.q1 += f1;
+    if (f1 <= 0.0) continue;
+    const double d = (mu * normal_N[i] - f0) / f1;
+    if (d < *release_at) *release_at = d, *release = i;
+  }
+  return seg;
+}
+
+}  // namespace
+
 QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
-                                       double mu, int grid_points) {
+                                       double mu, int grid_points, double presliding_m) {
   const int n = static_cast<int>(lattice.pins.size());
   if (static_cast<int>(normal_N.size()) != n || static_cast<int>(in_contact.size()) != n) {
     throw std::invalid_argument("SolveQuasiStaticShear: one normal load and contact flag per pin");
@@ -192,57 +260,15 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
     mu_P += mu * normal_N[i];
   }
   if (!(mu_P > 0.0)) throw SimulationError("quasi-static shear: no pin in contact");
-  // Segments between releases: start displacement, and Q = q0 + q1 delta.
-  struct Segment {
-    double delta0, q0, q1;
-  };
+  // Release the pins one by one; every force is affine in delta between two releases.
   std::vector<Segment> segments;
   double delta = 0.0;
   while (std::count(stuck.begin(), stuck.end(), 1) > 0) {
-    std::vector<int> S, U;
-    for (int i = 0; i < n; ++i) (stuck[i] ? S : U).push_back(i);
-    // u_U = x0 - delta x1 with K_UU x0 = b_U (slipping pins' friction), K_UU x1 = K_US 1.
-    Eigen::VectorXd x0 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(U.size()));
-    Eigen::VectorXd x1 = x0;
-    if (!U.empty()) {
-      Eigen::MatrixXd Kuu(U.size(), U.size());
-      Eigen::VectorXd b(U.size()), kus1(U.size());
-      for (size_t a = 0; a < U.size(); ++a) {
-        b(a) = slipped[U[a]] ? mu * normal_N[U[a]] : 0.0;
-        kus1(a) = 0.0;
-        for (int j : S) kus1(a) += K(U[a], j);
-        for (size_t c = 0; c < U.size(); ++c) Kuu(a, c) = K(U[a], U[c]);
-      }
-      const Eigen::LDLT<Eigen::MatrixXd> ldlt(Kuu);
-      x0 = ldlt.solve(b);
-      x1 = ldlt.solve(kus1);
-    }
-    // Forces on the stuck pins: f = f0 + delta f1.
-    double best = std::numeric_limits<double>::infinity();
     int release = -1;
-    Segment seg{delta, 0.0, 0.0};
-    for (int i = 0; i < n; ++i) {
-      if (slipped[i]) seg.q0 += mu * normal_N[i];
-    }
-    for (int i : S) {
-      double f0 = 0.0, f1 = 0.0;
-      for (size_t a = 0; a < U.size(); ++a) {
-        f0 += K(i, U[a]) * x0(a);
-        f1 -= K(i, U[a]) * x1(a);
-      }
-      for (int j : S) f1 += K(i, j);
-      seg.q0 += f0;
-      seg.q1 += f1;
-      if (f1 <= 0.0) continue;
-      const double d = (mu * normal_N[i] - f0) / f1;
-      if (d < best) {
-        best = d;
-        release = i;
-      }
-    }
+    double at = 0.0;
+    segments.push_back(SolveSegment(K, normal_N, mu, presliding_m, stuck, slipped, delta, &release, &at));
     if (release < 0) throw SimulationError("quasi-static shear: the stuck pins carry no load as the plate moves");
-    delta = std::max(delta, best);
-    segments.push_back(std::move(seg));
+    delta = std::max(delta, at);
     const Segment& last = segments.back();
     out.release_delta_m[release] = delta;
     out.release_q[release] = (last.q0 + last.q1 * delta) / mu_P;
@@ -392,7 +418,8 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   // differ from it is the dynamics' and the soft contact's doing; where both miss the band
   // it is the lattice's mechanics.
   const QuasiStaticShear qs =
-      SolveQuasiStaticShear(lattice, mech.k_tip_N_m, mech.k_couple_N_m, press_N, press_contact, mu, 4000);
+      SolveQuasiStaticShear(lattice, mech.k_tip_N_m, mech.k_couple_N_m, press_N, press_contact, mu, 4000,
+                            spec.sim.noslip == "exact" ? spec.contact.presliding_mm * 1e-3 : 0.0);
   int qs_judged = 0;
   for (size_t g = 0; g < qs.grid_q.size(); ++g) {
     const double q = qs.grid_q[g];

@@ -134,9 +134,15 @@ struct QuasiStaticShear {
   /// its release on).
   bool StuckAt(size_t i, double delta) const { return delta < release_delta_m[i]; }
 };
+
+/// Exact quasi-static solution of a membrane-coupled lattice (shear stiffness k_tip per
+/// pin, k_couple per lattice edge) under a flat plate moving tangentially: each pin's
+/// release load, event by event. `presliding_m` > 0 ties each sticking pin to the plate by
+/// its pre-sliding spring mu N_i / presliding_m (the friction pass's contact law); 0 is
+/// rigid stick. Throws SimulationError when no pin is in contact.
 QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
-                                       double mu, int grid_points);
+                                       double mu, int grid_points, double presliding_m = 0.0);
 
 /// Throws InputError unless the skin is the membrane-coupled lattice the dome check needs.
 void CheckDomeSkin(const SkinConfig& skin);

@@ -279,4 +279,8 @@ void FailRule(const std::string& key, double value, const std::string& rule) {
   throw InputError(key + " = " + config_detail::FormatReal(value) + ": " + rule);
 }
 
+void FailRule(const std::string& key, const std::string& value, const std::string& rule) {
+  throw InputError(key + " = '" + value + "': " + rule);
+}
+
 }  // namespace tactip

@@ -209,5 +209,7 @@ Config LoadConfig(const std::string& yaml_path, const std::vector<std::string>& 
 
 /// Throws InputError "key = value: reason" for cross-field rules in ValidateRules().
 [[noreturn]] void FailRule(const std::string& key, double value, const std::string& rule);
+/// The same for a text-valued key: "key = 'value': reason".
+[[noreturn]] void FailRule(const std::string& key, const std::string& value, const std::string& rule);
 
 }  // namespace tactip

@@ -8,12 +8,18 @@
 
 namespace tactip {
 
+/// Name of the MJCF custom numeric that switches tactip's friction pass on (sim.noslip =
+/// exact); its values are the clamp-and-solve rounds and the pre-sliding displacement in
+/// metres. Scenes write it with MuJoCo's own noslip off.
+inline constexpr const char* kFrictionPassNumeric = "tactip_friction_pass";
+
 /// Integrator and constraint-solver settings (the `sim.` section).
 struct SimConfig {
   double timestep_s = 2e-3;        ///< physics step
   int iterations = 50;             ///< Newton iterations per step
   double tolerance = 1e-10;        ///< solver early-exit tolerance
-  int noslip_iterations = 10;      ///< noslip post-pass iterations (0 = off: contacts creep)
+  std::string noslip = "exact";    ///< friction post-pass: exact (direct solve) or mujoco (Gauss-Seidel sweeps)
+  int noslip_iterations = 10;      ///< noslip rounds (exact) or sweeps (mujoco); 0 = off: contacts creep
   double noslip_tolerance = 1e-10; ///< noslip early-exit tolerance
   double impratio = 10.0;          ///< friction-to-normal impedance ratio (elliptic cones)
   std::string cone = "elliptic";   ///< friction cone
@@ -29,19 +35,31 @@ struct SimConfig {
       "Maximum Newton iterations per step (the solver usually exits after 2-5).", Bounds::Closed(1, 1000));
     v("tolerance", tolerance, "", "Newton early-exit tolerance on the cost improvement.",
       Bounds::LeftOpen(0.0, 1e-2));
+    v("noslip", noslip, "",
+      "Friction post-pass that stops sticking contacts from creeping. exact: the friction forces of all contacts "
+      "solved at once (Cholesky of the friction rows' Delassus matrix), contacts outside their cone clamped onto "
+      "it and the rest solved again. mujoco: MuJoCo's own noslip (Gauss-Seidel sweeps), which converges slowly "
+      "when many contacts share a few heavy bodies and each moves a light pin of its own (sloped contacts).",
+      Choices{"exact", "mujoco"});
     v("noslip_iterations", noslip_iterations, "",
-      "Noslip post-pass iterations. MuJoCo friction rows have no position term, so without this pass "
-      "a stuck contact creeps (~1 mm/s measured); 10 reduces creep to ~1e-5 mm/s.",
+      "Noslip pass: clamp-and-solve rounds (exact) or Gauss-Seidel sweeps (mujoco). MuJoCo friction rows have "
+      "no position term, so without this pass a stuck contact creeps (~1 mm/s measured); 0 switches it off.",
       Bounds::Closed(0, 1000));
     v("noslip_tolerance", noslip_tolerance, "", "Noslip early-exit tolerance.", Bounds::LeftOpen(0.0, 1e-2));
     v("impratio", impratio, "",
       "Ratio of frictional to normal constraint impedance; high values make friction stiff (less "
       "creep) with elliptic cones.",
-      Bounds::Closed(1.0, 1000.0));
+      Bounds::Closed(0.01, 1000.0));
     v("cone", cone, "", "Friction cone type: elliptic is the exact Coulomb cone.", Choices{"elliptic", "pyramidal"});
     v("check_stability", check_stability, "",
       "Refuse a timestep above 0.9 x the stability limit of the stiffest explicit spring mode "
       "(see MaxStableTimestep). Turn off only to study the instability itself.");
+  }
+  /// The exact noslip pass needs elliptic cones.
+  void ValidateRules() const {
+    if (noslip == "exact" && cone != "elliptic") {
+      FailRule("sim.cone", cone, "pyramidal cones need sim.noslip = mujoco (the exact noslip pass solves elliptic cones)");
+    }
   }
 };
 

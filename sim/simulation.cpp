@@ -106,8 +106,18 @@ Simulation::Simulation(const CompiledModel& model)
       data_(mj_makeData(model.raw())),
       jac_a_(3 * static_cast<size_t>(model.nv())),
       jac_b_(3 * static_cast<size_t>(model.nv())),
-      efc_vel_(static_cast<size_t>(model.raw()->njmax)) {
+      efc_vel_(static_cast<size_t>(model.raw()->njmax)),
+      plane_(model.raw()) {
   if (!data_) throw ModelError("cannot allocate mjData");
+  const mjModel* m = model.raw();
+  // The friction pass is on when the model carries its settings (rounds, pre-sliding).
+  const int id = mj_name2id(m, mjOBJ_NUMERIC, kFrictionPassNumeric);
+  if (id >= 0 && m->numeric_size[id] >= 2) {
+    FrictionPassSettings fs;
+    fs.max_rounds = static_cast<int>(m->numeric_data[m->numeric_adr[id]]);
+    fs.presliding_m = m->numeric_data[m->numeric_adr[id] + 1];
+    friction_ = std::make_unique<FrictionPass>(m, fs);
+  }
 }
 
 Simulation::~Simulation() = default;
@@ -119,6 +129,12 @@ void Simulation::SetControl(int actuator, double value) { data_->ctrl[actuator] 
 void Simulation::Forward() {
   const double t = data_->time;
   mj_forward(model_.raw(), data_.get());
+  if (plane_.active()) {
+    // Solve the constraints again with the friction rows across the pressing axes.
+    plane_.Apply(model_.raw(), data_.get());
+    mj_fwdConstraint(model_.raw(), data_.get());
+  }
+  if (friction_) last_friction_ = friction_->Apply(model_.raw(), data_.get());
   CheckWarnings(t);
 }
 
@@ -127,8 +143,22 @@ void Simulation::Step() {
   // contact Jacobians from step1 match the configuration the forces act in.
   // MuJoCo resets the state (and its time) on a bad step, so remember when it started.
   const double t = data_->time;
-  mj_step1(model_.raw(), data_.get());
-  mj_step2(model_.raw(), data_.get());
+  const mjModel* m = model_.raw();
+  mjData* d = data_.get();
+  mj_step1(m, d);
+  plane_.Apply(m, d);
+  if (!friction_) {
+    mj_step2(m, d);
+  } else {
+    // mj_step2 with the friction pass between the constraint solve and integration.
+    mj_fwdActuation(m, d);
+    mj_fwdAcceleration(m, d);
+    mj_fwdConstraint(m, d);
+    last_friction_ = friction_->Apply(m, d);
+    mj_sensorAcc(m, d);
+    mj_checkAcc(m, d);
+    mj_Euler(m, d);
+  }
   CheckWarnings(t);
 }
 

@@ -8,10 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "sim/friction_plane.h"
+#include "sim/friction_pass.h"
+#include "sim/sim_config.h"
+
 struct mjModel_;
 struct mjData_;
 
 namespace tactip {
+
 
 /// Thrown when an MJCF text does not compile or a named element is missing.
 class ModelError : public std::runtime_error {
@@ -111,12 +116,17 @@ class Simulation {
 
   /// Reads the contacts of the tracked geoms. `slot_of_geom` maps geom id -> output
   /// slot (or -1); `out` must have one entry per slot. Slip speed uses the velocity
-  /// after the last step at the configuration the contacts were detected in.
+  /// after the last step at the configuration the contacts were detected in, through the
+  /// friction rows (across a pin's pressing axis: see FrictionPlane).
   void ReadContacts(const std::vector<int>& slot_of_geom, std::vector<GeomContact>& out);
   /// Number of active contacts.
   int ContactCount() const;
   /// Total number of warnings MuJoCo has raised in this run (all kinds).
   int WarningCount() const;
+  /// True when the model asks for tactip's friction pass (see FrictionPass).
+  bool friction_pass() const { return friction_ != nullptr; }
+  /// What the friction pass did in the last step (zeros when it is off).
+  const FrictionPassStats& last_friction_pass() const { return last_friction_; }
 
  private:
   void CheckWarnings(double step_start_time);
@@ -124,7 +134,10 @@ class Simulation {
   std::unique_ptr<mjData_, MjDataDeleter> data_;
   std::vector<double> jac_a_, jac_b_;  // 3 x nv scratch for contact-point Jacobians
   std::vector<double> efc_vel_;        // constraint-space velocity J * qvel (njmax)
+  FrictionPlane plane_;                // friction rows across the pins' pressing axes
   std::array<int, 8> warn_seen_{};
+  std::unique_ptr<FrictionPass> friction_;  // null: MuJoCo's own noslip (or none)
+  FrictionPassStats last_friction_;
 };
 
 }  // namespace tactip

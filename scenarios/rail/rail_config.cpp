@@ -6,6 +6,7 @@ namespace tactip {
 
 void RailScenarioConfig::ValidateRules() const {
   // Section rules first, then rules that tie sections together.
+  sim.ValidateRules();
   skin.ValidateRules();
   contact.ValidateRules();
   if (contact.timeconst_s < 2.0 * sim.timestep_s) {

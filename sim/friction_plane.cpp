@@ -1,0 +1,116 @@
+#include "sim/friction_plane.h"
+
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tactip {
+
+namespace {
+constexpr double kAlignedSine = 1e-9;  // |n x axis| below this: the normal lies along the axis already
+constexpr double kMaxTiltCos = 0.5;    // contacts tilted more than 60 deg from the axis are sideways touches, left as they are
+
+void Cross(const double* a, const double* b, double* out) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+double Dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+}  // namespace
+
+FrictionPlane::FrictionPlane(const mjModel* m) : axis_joint_(m->nbody, -1) {
+  if (m->nuser_jnt < 1 || m->opt.cone != mjCONE_ELLIPTIC) return;
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->jnt_user[j * m->nuser_jnt] != kCompressionJointUser || m->jnt_type[j] != mjJNT_SLIDE) continue;
+    if (axis_joint_[m->jnt_bodyid[j]] < 0) axis_joint_[m->jnt_bodyid[j]] = j;
+    active_ = true;
+  }
+}
+
+void FrictionPlane::CombineRows(const mjModel* m, mjData* d, int r1, int r2, int rn, const double w1[3],
+                                const double w2[3]) const {
+  // new r1 = w1 . (r1, r2, rn), new r2 = w2 . (r1, r2, rn), in efc_J, efc_JT and efc_vel;
+  // friction rows have no position term, so their reference acceleration is -B vel.
+  const int rows[3] = {r1, r2, rn};
+  const auto combine = [&](double* v1, double* v2, double a, double b, double n) {
+    const double x = w1[0] * a + w1[1] * b + w1[2] * n, y = w2[0] * a + w2[1] * b + w2[2] * n;
+    *v1 = x;
+    *v2 = y;
+  };
+  if (mj_isSparse(m)) {
+    const int a1 = d->efc_J_rowadr[r1], a2 = d->efc_J_rowadr[r2], an = d->efc_J_rowadr[rn];
+    const int nnz = d->efc_J_rownnz[r1];
+    for (int t = 0; t < nnz; ++t) {
+      double *j1 = d->efc_J + a1 + t, *j2 = d->efc_J + a2 + t;
+      combine(j1, j2, *j1, *j2, d->efc_J[an + t]);
+      // The same two entries in the transposed Jacobian (its row = this column).
+      const int c = d->efc_J_colind[a1 + t];
+      const int* cols = d->efc_JT_colind + d->efc_JT_rowadr[c];
+      const int len = d->efc_JT_rownnz[c];
+      const int* p1 = std::lower_bound(cols, cols + len, r1);
+      const int* p2 = std::lower_bound(cols, cols + len, r2);
+      if (p1 != cols + len && *p1 == r1) d->efc_JT[d->efc_JT_rowadr[c] + (p1 - cols)] = *j1;
+      if (p2 != cols + len && *p2 == r2) d->efc_JT[d->efc_JT_rowadr[c] + (p2 - cols)] = *j2;
+    }
+  } else {
+    const int nv = m->nv, nefc = d->nefc;
+    for (int c = 0; c < nv; ++c) {
+      double *j1 = d->efc_J + r1 * nv + c, *j2 = d->efc_J + r2 * nv + c;
+      combine(j1, j2, *j1, *j2, d->efc_J[rn * nv + c]);
+      d->efc_JT[c * nefc + r1] = *j1;
+      d->efc_JT[c * nefc + r2] = *j2;
+    }
+  }
+  combine(d->efc_vel + r1, d->efc_vel + r2, d->efc_vel[r1], d->efc_vel[r2], d->efc_vel[rn]);
+  for (int r : {r1, r2}) d->efc_aref[r] = -d->efc_KBIP[4 * r + 1] * d->efc_vel[r];
+  (void)rows;
+}
+
+void FrictionPlane::Apply(const mjModel* m, mjData* d) const {
+  if (!active_) return;
+  const bool sparse = mj_isSparse(m);
+  for (int i = 0; i < d->nefc; ++i) {
+    if (d->efc_type[i] != mjCNSTR_CONTACT_ELLIPTIC) continue;
+    mjContact& con = d->contact[d->efc_id[i]];
+    const int dim = con.dim;
+    const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+    const int jnt = axis_joint_[b1] >= 0 ? axis_joint_[b1] : axis_joint_[b2];
+    if (dim < 3 || jnt < 0 || (sparse && d->efc_J_rownnz[i + 1] != d->efc_J_rownnz[i])) {
+      i += dim - 1;
+      continue;
+    }
+    // New tangents: u1 perpendicular to the axis a in the tangent plane, u2 = n x u1; the
+    // second friction direction is u2 with its component along a taken out, normalized.
+    const double* a = d->xaxis + 3 * jnt;
+    const double* n = con.frame;
+    double u1[3], u2[3];
+    Cross(n, a, u1);
+    const double sine = std::sqrt(Dot(u1, u1));
+    if (sine < kAlignedSine) {
+      i += dim - 1;
+      continue;
+    }
+    if (std::abs(Dot(n, a)) < kMaxTiltCos) {
+      i += dim - 1;
+      continue;
+    }
+    for (double& x : u1) x /= sine;
+    Cross(n, u1, u2);
+    const double* t1 = con.frame + 3;
+    const double* t2 = con.frame + 6;
+    const double p = Dot(u2, a), an = Dot(a, n), q = std::sqrt(1.0 - p * p);
+    const double w1[3] = {Dot(u1, t1), Dot(u1, t2), 0.0};
+    const double w2[3] = {q * Dot(u2, t1), q * Dot(u2, t2), -p * an / q};
+    CombineRows(m, d, i + 1, i + 2, i, w1, w2);
+    for (int k = 0; k < 3; ++k) {
+      con.frame[3 + k] = u1[k];
+      con.frame[6 + k] = (u2[k] - p * a[k]) / q;
+    }
+    i += dim - 1;
+  }
+  // MuJoCo's own noslip pass works on the projected matrix, built from the old rows.
+  if (m->opt.noslip_iterations > 0 || m->opt.solver == mjSOL_PGS) mj_projectConstraint(m, d);
+}
+
+}  // namespace tactip
