@@ -46,12 +46,9 @@ std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& l
   return out;
 }
 
-namespace {
-// Moving mass carried by the arm's z stage: sensor housing plus skin.
 double SensorMassKg(const SkinMechanics& mech, size_t n_pins) {
   return kSensorMassKg + mech.shell_mass_kg + static_cast<double>(n_pins) * mech.pin_mass_kg;
 }
-}  // namespace
 
 mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
                         double gravity_z, int n_collidable) {
@@ -89,37 +86,6 @@ mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, con
         .Set("data", std::vector<double>{static_cast<double>(sim.noslip_iterations), contact.presliding_mm * 1e-3});
   }
   return root;
-}
-
-StiffMode RailStiffestMode(const RailSceneSpec& spec) {
-  const PinLattice lattice = PinLattice::Build(spec.skin);
-  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
-  StiffMode mode;
-  mode.omega = mech.StiffestOmega();
-  mode.zeta = mech.pin_damping_Ns_m / (2.0 * mech.pin_mass_kg * mode.omega);
-  mode.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, "
-              "skin.thickness_mm, skin.pin_mass_g)";
-  if (spec.skin.coupling == "membrane") {
-    // A membrane lattice raises its joint damping to keep its modes stable (reported for
-    // completeness; a mode binds only if the others allow more).
-    mode.zeta = mech.NormalDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * mode.omega);
-    const double w = mech.StiffestShearOmega();
-    const double zeta = mech.TipDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * w);
-    if (MaxStableTimestep(w, zeta) < MaxStableTimestep(mode.omega, mode.zeta)) {
-      mode.omega = w;
-      mode.zeta = zeta;
-      mode.name = "the membrane lattice's shear mode (set by skin.thickness_mm, skin.skin_modulus_mpa, "
-                  "skin.ridge_*, skin.pin_mass_g)";
-    }
-  }
-  // The z servo carries less mass than the x servo, so it is the stiffer of the two.
-  const double w_arm = spec.arm.Omega(spec.arm.stage_mass_kg + SensorMassKg(mech, lattice.size()));
-  if (w_arm > mode.omega) {
-    mode.omega = w_arm;
-    mode.zeta = spec.arm.damping_ratio;
-    mode.name = "the arm servo (set by arm.kp_N_m, arm.stage_mass_kg)";
-  }
-  return mode;
 }
 
 BuiltScene BuildRailScene(const RailSceneSpec& spec) {
@@ -225,7 +191,6 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   out.xml = root.ToXml();
   out.n_pins = static_cast<int>(lattice.size());
   out.n_collidable = skin.n_collidable;
-  out.stiffest = RailStiffestMode(spec);
   return out;
 }
 

@@ -138,22 +138,14 @@ struct RailSceneSpec {
   double max_depth_m = 0.0;  ///< deepest press any run will make (for contact culling)
 };
 
-/// The stiffest explicitly integrated spring mode of a scene.
-struct StiffMode {
-  double omega = 0.0;  ///< natural frequency, rad/s
-  double zeta = 0.0;   ///< damping ratio
-  std::string name;    ///< which part it belongs to and the keys that set it
-};
-
-/// The stiffest mode of the rail scene: pin normal mode or arm servo.
-StiffMode RailStiffestMode(const RailSceneSpec& spec);
+/// Moving mass carried by the arm's z stage: sensor housing plus skin (kg).
+double SensorMassKg(const SkinMechanics& mech, size_t n_pins);
 
 /// A built scene: the MJCF text and facts about it.
 struct BuiltScene {
   std::string xml;
   int n_pins = 0;
   int n_collidable = 0;
-  StiffMode stiffest;             ///< highest explicit-spring natural frequency
 };
 
 /// Assembles the rail scene: world, rail + slider + stimulus, arm + sensor + skin.

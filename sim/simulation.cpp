@@ -94,6 +94,7 @@ int CompiledModel::ActuatorId(const std::string& n) const {
 }
 int CompiledModel::JointQposAdr(int j) const { return model_->jnt_qposadr[j]; }
 int CompiledModel::JointDofAdr(int j) const { return model_->jnt_dofadr[j]; }
+void CompiledModel::EnableEnergy() { model_->opt.enableflags |= mjENBL_ENERGY; }
 void CompiledModel::SetGeomFriction(int g, double mu) { model_->geom_friction[3 * g] = mu; }
 double CompiledModel::GeomFriction(int g) const { return model_->geom_friction[3 * g]; }
 double CompiledModel::timestep() const { return model_->opt.timestep; }
@@ -160,6 +161,31 @@ void Simulation::Step() {
     mj_Euler(m, d);
   }
   CheckWarnings(t);
+  if (mjENABLED(mjENBL_ENERGY)) AuditEnergy();
+}
+
+void Simulation::AuditEnergy() {
+  // d->energy was computed at the start of this step, with the state the last step ended
+  // in: energy created by the last step = its change minus the work done over that step
+  // (forces of the step times the velocity it ended with, the semi-implicit update).
+  const mjModel* m = model_.raw();
+  const mjData* d = data_.get();
+  const double h = m->opt.timestep;
+  const double energy = d->energy[0] + d->energy[1];
+  if (audit_started_) energy_created_J_ = energy - energy_prev_J_ - h * power_prev_W_;
+  double power = 0.0;
+  for (int i = 0; i < m->nv; ++i) {
+    const double v = d->qvel[i];
+    power += v * (d->qfrc_actuator[i] + d->qfrc_constraint[i]) - m->dof_damping[i] * v * v;
+  }
+  for (int t = 0; t < m->ntendon; ++t) power -= m->tendon_damping[t] * d->ten_velocity[t] * d->ten_velocity[t];
+  // Elastic energy: the potential minus gravity's share (sum of m g height).
+  double gravity = 0.0;
+  for (int b = 1; b < m->nbody; ++b) gravity -= m->body_mass[b] * mju_dot3(m->opt.gravity, d->xipos + 3 * b);
+  elastic_energy_J_ = d->energy[0] - gravity;
+  energy_prev_J_ = energy;
+  power_prev_W_ = power;
+  audit_started_ = true;
 }
 
 void Simulation::CheckWarnings(double step_start_time) {

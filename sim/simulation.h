@@ -59,6 +59,8 @@ class CompiledModel {
   int JointQposAdr(int joint) const;
   int JointDofAdr(int joint) const;
 
+  /// Makes MuJoCo compute the mechanical energy each step (for Simulation's energy audit).
+  void EnableEnergy();
   /// Sets the sliding friction coefficient of one geom (the contact uses the max of the pair).
   void SetGeomFriction(int geom, double mu);
   /// Sliding friction coefficient of one geom.
@@ -123,6 +125,12 @@ class Simulation {
   int ContactCount() const;
   /// Total number of warnings MuJoCo has raised in this run (all kinds).
   int WarningCount() const;
+  /// Energy audit of the last completed step (needs CompiledModel::EnableEnergy): the
+  /// mechanical energy the integration created, E(after) - E(before) - work of actuators,
+  /// damping and constraints (J; 0 until two steps are done), and the elastic energy stored
+  /// in springs and tendons at the step's start (J).
+  double energy_created_J() const { return energy_created_J_; }
+  double elastic_energy_J() const { return elastic_energy_J_; }
   /// True when the model asks for tactip's friction pass (see FrictionPass).
   bool friction_pass() const { return friction_ != nullptr; }
   /// What the friction pass did in the last step (zeros when it is off).
@@ -130,6 +138,7 @@ class Simulation {
 
  private:
   void CheckWarnings(double step_start_time);
+  void AuditEnergy();
   const CompiledModel& model_;
   std::unique_ptr<mjData_, MjDataDeleter> data_;
   std::vector<double> jac_a_, jac_b_;  // 3 x nv scratch for contact-point Jacobians
@@ -138,6 +147,10 @@ class Simulation {
   std::array<int, 8> warn_seen_{};
   std::unique_ptr<FrictionPass> friction_;  // null: MuJoCo's own noslip (or none)
   FrictionPassStats last_friction_;
+  // Energy audit: energy and non-conservative power of the previous step.
+  bool audit_started_ = false;
+  double energy_prev_J_ = 0.0, power_prev_W_ = 0.0;
+  double energy_created_J_ = 0.0, elastic_energy_J_ = 0.0;
 };
 
 }  // namespace tactip

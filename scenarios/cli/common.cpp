@@ -55,12 +55,13 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
                 h.shard->runs_text().c_str());
   }
   std::printf("runs         %zu\n", runs.size());
-  std::printf("%5s %7s %9s %10s %10s %10s %8s %9s %8s %9s\n", "run", "frames", "length_s", "onset_s", "fall_s",
-              "coulomb_s", "mu", "depth_mm", "v_mm_s", "creep_um");
+  std::printf("%5s %7s %9s %10s %10s %10s %8s %9s %8s %9s %7s\n", "run", "frames", "length_s", "onset_s", "fall_s",
+              "coulomb_s", "mu", "depth_mm", "v_mm_s", "creep_um", "health");
   size_t frames = 0;
   int slipped = 0;
   double err_sum = 0.0;
   int err_n = 0;
+  std::vector<std::string> flagged;
   for (int idx : runs) {
     const RunRecord r = reader.ReadRunSummary(idx);
     frames += r.frames();
@@ -71,14 +72,26 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
       err_sum += std::abs(onset - pred);
       ++err_n;
     }
-    std::printf("%5d %7zu %9.2f %10s %10s %10s %8.4f %9.3f %8.3f %9s\n", idx, r.frames(),
+    // Run health: ok, flagged (with the reason listed below), or not measured (older files).
+    const double ok = Attr(r, "health_ok");
+    const char* health = std::isnan(ok) ? "-" : (ok > 0.0 ? "ok" : "FLAGGED");
+    if (!std::isnan(ok) && ok <= 0.0) {
+      auto it = r.text_attrs.find("health_reason");
+      flagged.push_back(fmt::format("run {}: {}", idx, it == r.text_attrs.end() ? "" : it->second));
+    }
+    std::printf("%5d %7zu %9.2f %10s %10s %10s %8.4f %9.3f %8.3f %9s %7s\n", idx, r.frames(),
                 r.frames() ? r.time.back() : 0.0, Fmt(onset).c_str(), Fmt(Attr(r, "object_fall_s")).c_str(),
                 Fmt(pred).c_str(), Attr(r, "friction_coefficient"), Attr(r, "press_depth_mm"),
-                Attr(r, "retract_speed_mm_s"), Fmt(Attr(r, "creep_um"), "{:.2f}").c_str());
+                Attr(r, "retract_speed_mm_s"), Fmt(Attr(r, "creep_um"), "{:.2f}").c_str(), health);
   }
   std::printf("total        %zu frames; gross slip in %d of %zu runs", frames, slipped, runs.size());
   if (err_n > 0) std::printf("; mean |onset - Coulomb prediction| = %.1f ms", 1e3 * err_sum / err_n);
   std::printf("\n");
+  if (!flagged.empty()) {
+    std::printf("health       %zu run(s) FLAGGED (health_ok = 0); their ground truth is not to be trusted:\n",
+                flagged.size());
+    for (const auto& f : flagged) std::printf("  %s\n", f.c_str());
+  }
   if (with_config) std::printf("config:\n%s", h.config_yaml.c_str());
 }
 

@@ -67,11 +67,13 @@ int RunExport(const ScenarioEntry& entry, const ConfigSource& src, const std::st
 
 // One progress line per finished run.
 void PrintRunProgress(int done, int total, int idx, const RailRunSummary& s) {
+  const std::string health = s.health.ok ? "health ok" : "UNHEALTHY: " + s.health.reason;
   std::fprintf(stderr,
-               "[%d/%d] run %d: incipient %s s, onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s%s\n",
+               "[%d/%d] run %d: incipient %s s, onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s; "
+               "%s%s\n",
                done, total, idx, Fmt(s.incipient_onset_s).c_str(), Fmt(s.gross_slip_onset_s).c_str(),
                Fmt(s.object_fall_s).c_str(), Fmt(s.predicted_onset_s).c_str(), s.sim_time_s, s.wall_time_s,
-               s.held ? "" : " (not held: slipped during the lift; press deeper or lighten the object)");
+               health.c_str(), s.held ? "" : " (not held: slipped during the lift; press deeper or lighten the object)");
 }
 
 // tactip generate: simulate and write the dataset, then print its summary.

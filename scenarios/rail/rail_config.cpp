@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "models/stability.h"
+
 namespace tactip {
 
 void RailScenarioConfig::ValidateRules() const {
@@ -33,12 +35,13 @@ void RailScenarioConfig::ValidateRules() const {
   }
   if (sim.check_stability) {
     const StiffMode mode = RailStiffestMode(SceneSpec());
-    const double dt_max = MaxStableTimestep(mode.omega, mode.zeta);
+    const double dt_max = mode.MaxTimestep();
     if (sim.timestep_s > dt_max) {
       FailRule("sim.timestep_s", sim.timestep_s,
                fmt::format("unstable: exceeds the limit {:.3g} s of {} (omega = {:.0f} rad/s, damping ratio {:.2f}); "
-                           "use sim.timestep_s <= {:.3g}",
-                           dt_max, mode.name, mode.omega, mode.zeta, dt_max));
+                           "use sim.timestep_s <= {:.3g}{}",
+                           dt_max, mode.name, mode.omega, mode.zeta, dt_max,
+                           mode.other_fix.empty() ? "" : " or " + mode.other_fix));
     }
   }
 }

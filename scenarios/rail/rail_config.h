@@ -3,6 +3,7 @@
 // section, the cross-field rules and the scene it describes.
 
 #include "models/rail_rig.h"
+#include "scenarios/rail/run_health.h"
 #include "sensors/camera.h"
 #include "sensors/labels.h"
 #include "sim/sim_config.h"
@@ -20,6 +21,7 @@ struct RailScenarioConfig {
   CameraConfig sensor;
   ExternalCameraConfig external;
   LabelConfig labels;
+  HealthConfig health;
 
   template <class V>
   void Visit(V& v) {
@@ -32,6 +34,7 @@ struct RailScenarioConfig {
     v.Section("sensor", sensor);
     v.Section("external", external);
     v.Section("labels", labels);
+    v.Section("health", health);
   }
   /// Cross-field rules, including the timestep stability limit of the built model.
   void ValidateRules() const;

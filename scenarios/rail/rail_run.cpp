@@ -107,15 +107,19 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
       pin_slip_(n_),
       px_(2 * n_),
       ext_px_(2 * n_),
+      clean_px_(2 * n_),
       valid_(n_),
       ext_valid_(n_),
+      health_(n_, cfg.health),
       slid_before_gross_(n_, 0),
       end_time_(sched_.give_up),
       prev_margin_(kNaN),
       prev_skin_(kNaN),
       rel_ref_(kNaN),
+      lift_rel_ref_(kNaN),
       creep_ref_(kNaN) {
   SetUpFriction(d.run_seed);
+  model_.EnableEnergy();
   sim_.emplace(model_);
   sim_->Forward();
   sum_.press_depth_mm = depth_m_ * 1e3;
@@ -167,6 +171,8 @@ RailRunSummary RailRun::Execute(RunRecord& rec, const std::atomic<bool>* stop) {
     sim_->SetControl(im_.servo_z, sched_.Z(t));
     sim_->Step();
     ++sum_.steps;
+    const bool held = t >= sched_.lift_end && std::isnan(sum_.gross_slip_onset_s);
+    if (held) health_.Step(sim_->energy_created_J(), sim_->elastic_energy_J());
 
     // Between frames the contacts are read only while the onset (exact, at step
     // resolution) and its Coulomb prediction are still being searched for.
@@ -187,6 +193,7 @@ RailRunSummary RailRun::Execute(RunRecord& rec, const std::atomic<bool>* stop) {
     rec.time.push_back(tf);
     RecordFrame(t, rec);
     TrackEvents(t, tf);
+    TrackHealth(t);
   }
   Finish(rec);
   sum_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -198,7 +205,9 @@ void RailRun::ReadContactsAndLabel() {
   holding_N_ = 0.0;
   for (int i = 0; i < n_; ++i) {
     const GeomContact& gc = contacts_[i];
-    holding_N_ += mu_pin_[i] * gc.normal_N;
+    // Friction holds up to mu_s N in the rail's direction (it acts across the pressing
+    // axis, which the rail is); a sloped contact's normal force also pushes along the rail.
+    holding_N_ += mu_pin_[i] * gc.normal_N - gc.normal_N * gc.normal_world[2];
     const double fn = Dot(gc.force_world, gc.normal_world);
     for (int k = 0; k < 3; ++k) tangential_[i][k] = gc.force_world[k] - fn * gc.normal_world[k];
     const double ft = std::sqrt(Dot(tangential_[i], tangential_[i]));
@@ -239,7 +248,8 @@ void RailRun::TrackOnset(double t, bool seek_onset) {
 
 void RailRun::TrackPrediction(double t) {
   // Coulomb prediction from the simulated normal forces: the holding margin
-  // sum(mu_i N_i) + rail friction - m g crosses zero between two steps. The rail's static
+  // sum(mu_i N_i) + normal push along the rail + rail friction - m g crosses zero between
+  // two steps. The rail's static
   // friction (either sign, up to F_rail) shares the load in a statically undetermined way,
   // so the skin may start sliding anywhere between sum(mu_i N_i) = m g + F_rail and
   // sum(mu_i N_i) = m g - F_rail.
@@ -279,6 +289,7 @@ void RailRun::RecordPins(RunRecord& rec) {
     px_[2 * i] = static_cast<float>(uv[0]);
     px_[2 * i + 1] = static_cast<float>(uv[1]);
   }
+  clean_px_ = px_;
   noise_.Apply(px_, valid_, prev_px_);
   prev_px_ = px_;
   rec.pos_px.insert(rec.pos_px.end(), px_.begin(), px_.end());
@@ -322,6 +333,19 @@ void RailRun::RecordContacts(double t, RunRecord& rec) {
 }
 
 void RailRun::TrackEvents(double t, double tf) {
+  // An object the skin cannot lift is left behind during the lift (its contact may be lost
+  // before every pin is seen sliding): the run ends, not held.
+  if (t >= sched_.lift_start && t < sched_.retract_start && std::isnan(sum_.gross_slip_onset_s)) {
+    const double rel = sim_->BodyPos(im_.slider_body)[2] - origin_[2];
+    if (std::isnan(lift_rel_ref_)) lift_rel_ref_ = rel;
+    if (lift_rel_ref_ - rel > kOffDropM && !ending_) {
+      left_behind_ = true;
+      sum_.object_fall_s = tf;
+      ending_ = true;
+      end_time_ = std::min(end_time_, t + c_.rail.post_fall_s);
+    }
+    return;
+  }
   // Run-level events from frames: object drop and creep, from the retraction on (or from
   // the onset, if the object already slips during the lift).
   if (t < sched_.retract_start && std::isnan(sum_.gross_slip_onset_s)) return;
@@ -347,6 +371,16 @@ void RailRun::TrackEvents(double t, double tf) {
   }
 }
 
+void RailRun::TrackHealth(double t) {
+  // Held: from the lift's end until gross slip (a run whose object slipped during the lift
+  // is never held). Creep: the object relative to the centre pin's contact point, from the
+  // retraction on.
+  const bool held = t >= sched_.lift_end && std::isnan(sum_.gross_slip_onset_s);
+  const bool retracting = t >= sched_.retract_start;
+  const double creep = retracting ? sim_->BodyPos(im_.slider_body)[2] - sim_->SitePos(im_.pin_outer_site[0])[2] : kNaN;
+  health_.Frame(held, retracting, clean_px_.data(), pin_contact_.data(), labels_.n_slip > 0, creep);
+}
+
 void RailRun::Finish(RunRecord& rec) {
   sum_.creep_um = creep_max_ * 1e6;
   if (!std::isnan(sum_.incipient_onset_s) && !std::isnan(sum_.gross_slip_onset_s)) {
@@ -360,7 +394,7 @@ void RailRun::Finish(RunRecord& rec) {
     }
     if (n_c > 0) sum_.pre_slip_fraction = static_cast<double>(n_s) / n_c;
   }
-  sum_.held = std::isnan(sum_.gross_slip_onset_s) || sum_.gross_slip_onset_s >= sched_.retract_start;
+  sum_.held = !left_behind_ && (std::isnan(sum_.gross_slip_onset_s) || sum_.gross_slip_onset_s >= sched_.retract_start);
   sum_.mujoco_warnings = sim_->WarningCount();
   sum_.sim_time_s = static_cast<double>(sum_.steps) * dt_;
   rec.attrs["gross_slip_onset_s"] = sum_.gross_slip_onset_s;
@@ -379,6 +413,13 @@ void RailRun::Finish(RunRecord& rec) {
   rec.attrs["incipient_onset_s"] = sum_.incipient_onset_s;
   rec.attrs["incipient_lead_s"] = sum_.incipient_lead_s;
   rec.attrs["pre_slip_fraction"] = sum_.pre_slip_fraction;
+  sum_.health = health_.Result();
+  rec.attrs["health_ok"] = sum_.health.ok ? 1.0 : 0.0;
+  rec.attrs["flicker_max"] = sum_.health.flicker_max;
+  rec.attrs["held_pin_speed_px"] = sum_.health.pin_speed_px;
+  rec.attrs["stick_creep_um"] = sum_.health.stick_creep_um;
+  rec.attrs["energy_gain"] = sum_.health.energy_gain;
+  rec.text_attrs["health_reason"] = sum_.health.reason;
   rec.text_attrs["stimulus"] = c_.rail.stimulus;
   rec.text_attrs["skin_pattern"] = c_.skin.pattern;
   rec.CheckShapes();

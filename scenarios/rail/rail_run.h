@@ -13,6 +13,7 @@
 #include "scenarios/rail/rail_config.h"
 #include "scenarios/rail/rail_scenario.h"
 #include "scenarios/rail/rail_schedule.h"
+#include "scenarios/rail/run_health.h"
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
 #include "sensors/labels.h"
@@ -66,6 +67,7 @@ class RailRun {
   void RecordExternal(RunRecord& rec);
   void RecordContacts(double t, RunRecord& rec);
   void TrackEvents(double t, double tf);
+  void TrackHealth(double t);
   void Finish(RunRecord& rec);
 
   const RailScenarioConfig& c_;
@@ -90,22 +92,24 @@ class RailRun {
   std::vector<PinContactSample> samples_;
   std::vector<std::uint8_t> pin_contact_, pin_slip_;
   FrameLabels labels_;
-  double holding_N_ = 0.0;  // sum of mu_s,i * N_i
+  double holding_N_ = 0.0;  // what the contacts can hold along the rail: sum of mu_s,i N_i + N_i n_i.up
   std::uint8_t gross_ = 0;
 
   // Per frame: image positions and detections.
   std::vector<float> px_, prev_px_, ext_px_, prev_ext_px_;
+  std::vector<float> clean_px_;  // this frame's pin image positions before camera noise
   std::vector<std::uint8_t> valid_, ext_valid_;
   std::array<double, 3> origin_{};
   std::array<double, 9> rot_{};
 
-  // Run events.
+  // Run events and health.
   RailRunSummary sum_;
+  RunHealthMonitor health_;
   std::vector<std::uint8_t> slid_before_gross_, contact_at_retract_;
   double end_time_ = 0.0;
   double prev_margin_, prev_skin_, prev_t_ = 0.0;
-  double rel_ref_, creep_ref_, creep_max_ = 0.0;
-  bool ending_ = false;
+  double rel_ref_, lift_rel_ref_, creep_ref_, creep_max_ = 0.0;
+  bool ending_ = false, left_behind_ = false;
 };
 
 }  // namespace tactip

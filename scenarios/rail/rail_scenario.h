@@ -9,6 +9,7 @@
 #include <string>
 
 #include "scenarios/rail/rail_config.h"
+#include "scenarios/rail/run_health.h"
 #include "sensors/dataset.h"
 
 namespace tactip {
@@ -31,6 +32,7 @@ struct RailRunSummary {
   long long steps = 0;               ///< physics steps
   int mujoco_warnings = 0;           ///< warnings MuJoCo raised (a run with any stops early)
   bool held = true;                  ///< false: the object slipped before the retraction started
+  RunHealth health;                  ///< run health figures and verdict
 };
 
 /// Thrown by a run when its stop flag becomes true (Ctrl-C).

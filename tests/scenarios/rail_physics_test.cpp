@@ -205,6 +205,23 @@ TEST(RailPhysicsTest, UnstableTimestepIsRefusedWithSafeValue) {
   }
 }
 
+TEST(RailPhysicsTest, HardContactTouchDownIsRefusedWithSafeImpedanceAndTimestep) {
+  // impedance_min 0.99 at 2 ms: the touch-down mode omega_0 = sqrt(99) / (0.99 * 4 ms) =
+  // 2513 rad/s, limit 0.9 * 2 / omega_0 = 0.716 ms.
+  RailScenarioConfig c;
+  c.contact.impedance_min = 0.99;
+  try {
+    RailScenario s(c);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("sim.timestep_s = 0.002: unstable: exceeds the limit 0.000716 s of the contact's touch-down mode"),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("use sim.timestep_s <= 0.000716 or contact.impedance_min <= 0.927"), std::string::npos) << msg;
+  }
+}
+
 TEST(RailPhysicsTest, DefaultsAreValid) {
   RailScenarioConfig c;
   EXPECT_NO_THROW(ValidateConfig(c));

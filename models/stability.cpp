@@ -1,0 +1,73 @@
+#include "models/stability.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace tactip {
+
+namespace {
+constexpr double kSafety = 0.9;  // as MaxStableTimestep
+}  // namespace
+
+double StiffMode::MaxTimestep() const { return MaxStableTimestep(omega, zeta, kSafety); }
+
+StiffMode ContactTouchdownMode(const ContactConfig& contact) {
+  // solref (timeconst, dampratio 1): stiffness 1 / (dmax timeconst)^2 per unit mass, scaled
+  // by d / (1 - d) at impedance d.
+  const double d0 = contact.impedance_min;
+  StiffMode m;
+  m.omega = std::sqrt(d0 / (1.0 - d0)) / (contact.impedance * contact.timeconst_s);
+  m.zeta = 0.0;
+  m.name = "the contact's touch-down mode (set by contact.impedance_min, contact.impedance, contact.timeconst_s)";
+  return m;
+}
+
+double MaxStableImpedanceMin(const ContactConfig& contact, double timestep_s) {
+  const double omega_max = kSafety * 2.0 / timestep_s;
+  const double x = std::pow(omega_max * contact.impedance * contact.timeconst_s, 2.0);
+  return x / (1.0 + x);
+}
+
+std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
+  const PinLattice lattice = PinLattice::Build(spec.skin);
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
+  const bool membrane = spec.skin.coupling == "membrane";
+  std::vector<StiffMode> modes;
+  // The pin normal mode with every neighbour in antiphase. A membrane lattice raises its
+  // joint damping to keep its modes stable at the configured step.
+  StiffMode pin;
+  pin.omega = mech.StiffestOmega();
+  const double c_normal = membrane ? mech.NormalDamping(spec.sim.timestep_s) : mech.pin_damping_Ns_m;
+  pin.zeta = c_normal / (2.0 * mech.pin_mass_kg * pin.omega);
+  pin.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, skin.thickness_mm, "
+             "skin.pin_mass_g)";
+  modes.push_back(pin);
+  if (membrane) {
+    StiffMode shear;
+    shear.omega = mech.StiffestShearOmega();
+    shear.zeta = mech.TipDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * shear.omega);
+    shear.name = "the membrane lattice's shear mode (set by skin.thickness_mm, skin.skin_modulus_mpa, skin.ridge_*, "
+                 "skin.pin_mass_g)";
+    modes.push_back(shear);
+  }
+  // The z servo carries less mass than the x servo, so it is the stiffer of the two.
+  StiffMode arm;
+  arm.omega = spec.arm.Omega(spec.arm.stage_mass_kg + SensorMassKg(mech, lattice.size()));
+  arm.zeta = spec.arm.damping_ratio;
+  arm.name = "the arm servo (set by arm.kp_N_m, arm.stage_mass_kg)";
+  modes.push_back(arm);
+  StiffMode touch = ContactTouchdownMode(spec.contact);
+  touch.other_fix = fmt::format("contact.impedance_min <= {:.3g}", MaxStableImpedanceMin(spec.contact, spec.sim.timestep_s));
+  modes.push_back(touch);
+  return modes;
+}
+
+StiffMode RailStiffestMode(const RailSceneSpec& spec) {
+  const std::vector<StiffMode> modes = RailModes(spec);
+  return *std::min_element(modes.begin(), modes.end(),
+                           [](const StiffMode& a, const StiffMode& b) { return a.MaxTimestep() < b.MaxTimestep(); });
+}
+
+}  // namespace tactip

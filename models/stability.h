@@ -1,0 +1,43 @@
+#pragma once
+// The modes that limit a rail scene's timestep, each with the largest stable step and what
+// to change: the skin's pin normal mode, a membrane lattice's shear mode, the arm servos,
+// and the contact's touch-down mode.
+//
+// MuJoCo's Euler step integrates joint damping implicitly and stiffness explicitly; a mode
+// of frequency omega and damping ratio zeta is stable for omega dt < 2 (zeta + sqrt(zeta^2
+// + 1)). A contact is found at the start of a step and holds no force while apart, so its
+// touch-down is explicit and undamped: MuJoCo's soft contact at zero penetration acts on a
+// body as a spring of omega_0 = sqrt(d0 / (1 - d0)) / (dmax timeconst) per unit mass (d0 =
+// contact.impedance_min, dmax = contact.impedance), stable for omega_0 dt < 2. Above it a
+// pin that loses contact for one step is launched by its preload and chatters in and out.
+
+#include <string>
+#include <vector>
+
+#include "models/rail_rig.h"
+
+namespace tactip {
+
+/// One timestep-limiting mode.
+struct StiffMode {
+  double omega = 0.0;     ///< natural frequency, rad/s
+  double zeta = 0.0;      ///< damping ratio (0 for the explicit contact touch-down)
+  std::string name;       ///< which part it belongs to and the keys that set it
+  std::string other_fix;  ///< besides a smaller timestep, what makes it stable ("" if nothing)
+  /// Largest stable timestep with the 0.9 safety factor, s.
+  double MaxTimestep() const;
+};
+
+/// Every timestep-limiting mode of a rail scene.
+std::vector<StiffMode> RailModes(const RailSceneSpec& spec);
+
+/// The mode with the smallest stable timestep.
+StiffMode RailStiffestMode(const RailSceneSpec& spec);
+
+/// The contact's touch-down mode.
+StiffMode ContactTouchdownMode(const ContactConfig& contact);
+
+/// Largest contact.impedance_min whose touch-down mode is stable at `timestep_s`.
+double MaxStableImpedanceMin(const ContactConfig& contact, double timestep_s);
+
+}  // namespace tactip
