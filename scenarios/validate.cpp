@@ -471,6 +471,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   }
   out.outside_in_correlation = SpearmanCorrelation(radius, order);
   out.outside_in_order = OutsideInOrder(radius, order, &out.outside_in_pairs);
+  out.sim_time_s = rig.t;
   return out;
 }
 

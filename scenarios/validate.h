@@ -112,6 +112,7 @@ struct DomeCheck {
   double release_error_mean = 0.0, release_error_max = 0.0;
   int release_pins_compared = 0;
   std::vector<DomeRing> rings;  ///< outermost first
+  double sim_time_s = 0.0;      ///< simulated time of the press and the shear ramp
 };
 
 /// Exact quasi-static Coulomb solution of a membrane-coupled lattice sheared by a rigid

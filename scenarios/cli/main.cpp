@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "detectors/detector.h"
+#include "scenarios/cli/accuracy_command.h"
 #include "scenarios/cli/detect_commands.h"
 #include "scenarios/cli/scenario_commands.h"
 #include "scenarios/cli/study_commands.h"
@@ -66,6 +67,7 @@ int main(int argc, char** argv) {
   const std::vector<std::function<int()>> runners = {
       tactip::cli::AddScenarioCommands(app, &g_stop),
       tactip::cli::AddStudyCommands(app, &g_stop),
+      tactip::cli::AddAccuracyCommand(app, &g_stop),
       tactip::cli::AddDetectorCommands(app, &g_stop),
   };
   try {

@@ -1,0 +1,59 @@
+#include "scenarios/accuracy/settings.h"
+
+#include "sim/config.h"
+
+namespace tactip {
+
+std::vector<AccuracySetting> RailAccuracySettings() {
+  // The reference: a quarter of the default step, converged solver and friction pass.
+  const std::vector<std::string> fine = {"sim.timestep_s=0.0005", "sim.iterations=100", "sim.tolerance=1e-12",
+                                         "sim.noslip_iterations=30"};
+  return {
+      {"reference", fine, true, false},
+      {"default", {}, false, true},
+      {"dt=1ms", {"sim.timestep_s=0.001"}, false, false},
+      {"dt=1.5ms", {"sim.timestep_s=0.0015"}, false, false},
+      {"dt=2.5ms", {"sim.timestep_s=0.0025", "contact.timeconst_s=0.005"}, false, false},
+      {"iterations=5", {"sim.iterations=5"}, false, false},
+      {"tolerance=1e-6", {"sim.tolerance=1e-6"}, false, false},
+      {"noslip rounds=1", {"sim.noslip_iterations=1"}, false, false},
+      {"noslip=mujoco", {"sim.noslip=mujoco"}, false, false},
+      {"noslip=mujoco x50", {"sim.noslip=mujoco", "sim.noslip_iterations=50"}, false, false},
+      {"pyramidal", {"sim.cone=pyramidal", "sim.noslip=mujoco"}, false, false},
+      {"impratio=1", {"sim.impratio=1"}, false, false},
+      {"impratio=100", {"sim.impratio=100"}, false, false},
+      {"timeconst=8ms", {"contact.timeconst_s=0.008"}, false, false},
+      {"impedance=0.95", {"contact.impedance=0.95"}, false, false},
+      {"impedance_min=0.8", {"contact.impedance_min=0.8"}, false, false},
+      {"presliding=5um", {"contact.presliding_mm=0.005"}, false, false},
+      {"presliding=20um", {"contact.presliding_mm=0.02"}, false, false},
+  };
+}
+
+std::vector<AccuracySetting> DomeAccuracySettings() {
+  // The dome check runs at 1 ms; its reference is a quarter of that.
+  const std::vector<std::string> fine = {"sim.timestep_s=0.00025", "sim.iterations=100", "sim.tolerance=1e-12",
+                                         "sim.noslip_iterations=30"};
+  return {
+      {"reference", fine, true, false},
+      {"default (dt=1ms)", {}, false, true},
+      {"dt=0.5ms", {"sim.timestep_s=0.0005"}, false, false},
+      {"dt=2ms", {"sim.timestep_s=0.002"}, false, false},
+      {"iterations=5", {"sim.iterations=5"}, false, false},
+      {"noslip=mujoco", {"sim.noslip=mujoco"}, false, false},
+      {"impratio=1", {"sim.impratio=1"}, false, false},
+      {"timeconst=8ms", {"contact.timeconst_s=0.008"}, false, false},
+      {"presliding=20um", {"contact.presliding_mm=0.02"}, false, false},
+  };
+}
+
+const AccuracySetting& FindSetting(const std::vector<AccuracySetting>& settings, const std::string& label) {
+  std::string known;
+  for (const auto& s : settings) {
+    if (s.label == label) return s;
+    known += (known.empty() ? "" : ", ") + s.label;
+  }
+  throw InputError("unknown accuracy setting '" + label + "' (known: " + known + ")");
+}
+
+}  // namespace tactip
