@@ -9,6 +9,7 @@ namespace tactip {
 
 namespace {
 constexpr double kAlignedSine = 1e-9;  // |n x axis| below this: the normal lies along the axis already
+constexpr double kCancelled = 1e-12;   // relative size below which a combined Jacobian entry is a cancellation
 constexpr double kMaxTiltCos = 0.5;    // contacts tilted more than 60 deg from the axis are sideways touches, left as they are
 
 void Cross(const double* a, const double* b, double* out) {
@@ -19,7 +20,7 @@ void Cross(const double* a, const double* b, double* out) {
 double Dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 }  // namespace
 
-FrictionPlane::FrictionPlane(const mjModel* m) : axis_joint_(m->nbody, -1) {
+FrictionPlane::FrictionPlane(const mjModel* m) : axis_joint_(m->nbody, -1), scratch_(2 * static_cast<size_t>(m->nv)) {
   if (m->nuser_jnt < 1 || m->opt.cone != mjCONE_ELLIPTIC) return;
   for (int j = 0; j < m->njnt; ++j) {
     if (m->jnt_user[j * m->nuser_jnt] != kCompressionJointUser || m->jnt_type[j] != mjJNT_SLIDE) continue;
@@ -41,9 +42,20 @@ void FrictionPlane::CombineRows(const mjModel* m, mjData* d, int r1, int r2, int
   if (mj_isSparse(m)) {
     const int a1 = d->efc_J_rowadr[r1], a2 = d->efc_J_rowadr[r2], an = d->efc_J_rowadr[rn];
     const int nnz = d->efc_J_rownnz[r1];
+    // New values first, then exact zeros where they cancel: motion along the axis (the
+    // pin's own compression, a stage moving along it) has no component across it, and
+    // keeping rounding residue there would make every row touch its pin's dof.
+    double max1 = 0.0, max2 = 0.0;
     for (int t = 0; t < nnz; ++t) {
-      double *j1 = d->efc_J + a1 + t, *j2 = d->efc_J + a2 + t;
-      combine(j1, j2, *j1, *j2, d->efc_J[an + t]);
+      combine(&scratch_[2 * t], &scratch_[2 * t + 1], d->efc_J[a1 + t], d->efc_J[a2 + t], d->efc_J[an + t]);
+      max1 = std::max(max1, std::abs(scratch_[2 * t]));
+      max2 = std::max(max2, std::abs(scratch_[2 * t + 1]));
+    }
+    for (int t = 0; t < nnz; ++t) {
+      double* j1 = d->efc_J + a1 + t;
+      double* j2 = d->efc_J + a2 + t;
+      *j1 = std::abs(scratch_[2 * t]) > kCancelled * max1 ? scratch_[2 * t] : 0.0;
+      *j2 = std::abs(scratch_[2 * t + 1]) > kCancelled * max2 ? scratch_[2 * t + 1] : 0.0;
       // The same two entries in the transposed Jacobian (its row = this column).
       const int c = d->efc_J_colind[a1 + t];
       const int* cols = d->efc_JT_colind + d->efc_JT_rowadr[c];

@@ -38,6 +38,7 @@ class FrictionPlane {
   void CombineRows(const mjModel_* m, mjData_* d, int r1, int r2, int rn, const double w1[3],
                    const double w2[3]) const;
   std::vector<int> axis_joint_;  // per body: its compression joint, or -1
+  mutable std::vector<double> scratch_;  // 2 x nv: combined row values
   bool active_ = false;
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim/friction_plane.h"
+#include "sim/step_profile.h"
 #include "sim/friction_pass.h"
 #include "sim/sim_config.h"
 
@@ -70,6 +71,7 @@ class CompiledModel {
   /// Gravity magnitude in m/s^2.
   double gravity() const;
   int nv() const;
+  int nu() const;
   int ngeom() const;
 
   /// The raw model, for code inside sim/.
@@ -125,6 +127,10 @@ class Simulation {
   int ContactCount() const;
   /// Total number of warnings MuJoCo has raised in this run (all kinds).
   int WarningCount() const;
+  /// Times every stage of Step from now on (see StepProfile).
+  void EnableProfile() { profiling_ = true; }
+  /// The stage times summed since EnableProfile().
+  StepProfile profile() const;
   /// Energy audit of the last completed step (needs CompiledModel::EnableEnergy): the
   /// mechanical energy the integration created, E(after) - E(before) - work of actuators,
   /// damping and constraints (J; 0 until two steps are done), and the elastic energy stored
@@ -139,6 +145,7 @@ class Simulation {
  private:
   void CheckWarnings(double step_start_time);
   void AuditEnergy();
+  void StepProfiled();
   const CompiledModel& model_;
   std::unique_ptr<mjData_, MjDataDeleter> data_;
   std::vector<double> jac_a_, jac_b_;  // 3 x nv scratch for contact-point Jacobians
@@ -147,6 +154,8 @@ class Simulation {
   std::array<int, 8> warn_seen_{};
   std::unique_ptr<FrictionPass> friction_;  // null: MuJoCo's own noslip (or none)
   FrictionPassStats last_friction_;
+  bool profiling_ = false;
+  StepProfile profile_;
   // Energy audit: energy and non-conservative power of the previous step.
   bool audit_started_ = false;
   double energy_prev_J_ = 0.0, power_prev_W_ = 0.0;

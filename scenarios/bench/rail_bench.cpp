@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "scenarios/rail.h"
+#include "scenarios/speed.h"
 
 namespace {
 
@@ -45,6 +46,37 @@ void BM_RailRunTimestep(benchmark::State& state) {
 }
 BENCHMARK(BM_RailRunTimestep)->Arg(5)->Arg(10)->Arg(20)->Arg(25)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
+// Each scene of `tactip bench --speed`: its real-time factor, the physics steps alone, bare
+// mj_step on the same model with the same controls, and the stage costs, all from one run.
+void BM_SpeedScene(benchmark::State& state, const std::string& scene) {
+  tactip::SpeedRow row;
+  for (auto _ : state) row = tactip::MeasureSpeed({scene}, {}, 1).front();
+  const tactip::StepProfile& p = row.profile;
+  const double per_step = 1e6 / static_cast<double>(std::max<long long>(p.steps, 1));
+  state.counters["rtf_run"] = row.rtf_run();
+  state.counters["rtf_physics"] = row.rtf_physics();
+  state.counters["rtf_bare_mj_step"] = row.rtf_bare();
+  state.counters["overhead"] = row.overhead();
+  state.counters["run_over_bare"] = row.run_wall_s / row.bare_wall_s;
+  state.counters["us_collision"] = p.collision_s * per_step;
+  state.counters["us_solve"] = p.solve_s * per_step;
+  state.counters["us_friction_pass"] = p.friction_pass_s * per_step;
+  state.counters["us_step"] = p.total_s() * per_step;
+  state.counters["nefc"] = row.nefc_mean();
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  for (const auto& scene : tactip::SpeedScenes()) {
+    benchmark::RegisterBenchmark(("BM_SpeedScene/" + scene.name).c_str(), BM_SpeedScene, scene.name)
+        ->Unit(benchmark::kSecond)
+        ->Iterations(1)
+        ->UseRealTime();
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,6 +1,7 @@
 #include "scenarios/cli/detect_commands.h"
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -17,6 +18,7 @@
 #include "detectors/threshold.h"
 #include "scenarios/bench.h"
 #include "scenarios/slip_data.h"
+#include "scenarios/speed.h"
 #include "sim/files.h"
 
 namespace tactip::cli {
@@ -105,6 +107,26 @@ std::unique_ptr<Detector> WithResponse(std::unique_ptr<Detector> det, const std:
   return std::make_unique<ResponseDetector>(std::move(det), ResponseStrategy::Parse(response, 1));
 }
 
+// tactip bench --speed: the speed study's table, and DIR/speed.csv when an output folder is given.
+int RunSpeedStudy(const std::vector<std::string>& scenes, const std::vector<std::string>& sets,
+                  const std::string& out_dir, std::uint64_t seed) {
+  ChooseSpeedScenes(scenes);  // an unknown scene is named before anything runs
+  if (!out_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    CheckWritableLocation((std::filesystem::path(out_dir) / "speed.csv").string());
+  }
+  std::fprintf(stderr, "bench --speed: one run per scene on one core, every step timed\n");
+  const std::vector<SpeedRow> rows = MeasureSpeed(scenes, sets, seed);
+  std::printf("%s", FormatSpeedTable(rows).c_str());
+  if (!out_dir.empty()) {
+    const std::string path = (std::filesystem::path(out_dir) / "speed.csv").string();
+    WriteFileAtomic(path, SpeedCsv(rows));
+    std::fprintf(stderr, "wrote %s\n", path.c_str());
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>* stop) {
@@ -124,6 +146,8 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     int bench_runs = 40, jobs = 0;
     double speed = std::nan("");
     unsigned long long bench_seed = 2026;
+    bool speed_study = false;
+    std::vector<std::string> speed_scenes;
   };
   auto s = std::make_shared<State>();
 
@@ -184,6 +208,11 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
   bench->add_option("--jobs", s->jobs, "Generation threads (default: all cores).");
   bench->add_option("--config", s->config, "YAML rail config for the generated dataset.")->check(CLI::ExistingFile);
   bench->add_option("--set", s->sets, "Override a rail config key (repeatable).")->type_name("KEY=VALUE");
+  bench->add_flag("--speed", s->speed_study,
+                  "Instead of the slip benchmark: the speed study (real-time factor of each scene, the cost split of "
+                  "a step, the scenario's overhead over its physics and bare mj_step on the same model); "
+                  "single-threaded, one run per scene. With --out, also DIR/speed.csv.");
+  bench->add_option("--scene", s->speed_scenes, "With --speed: measure only this scene (repeatable).");
   s->train.Add(bench, false);
 
   return [s, train, eval, detect, bench, stop]() -> int {
@@ -245,6 +274,10 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
       std::fprintf(stderr, "wrote %s: %zu frames of %zu run(s) through %s\n", s->out.c_str(), frames, data.size(),
                    det->name().c_str());
       return 0;
+    }
+    if (*bench && s->speed_study) {
+      const bool write = bench->get_option("--out")->count() > 0;
+      return RunSpeedStudy(s->speed_scenes, s->sets, write ? s->bench_out : std::string(), s->bench_seed);
     }
     if (*bench) {
       BenchOptions o;

@@ -156,6 +156,20 @@ void RailRun::InitRecord(RunRecord& rec, int index) const {
   rec.time.reserve(std::min<size_t>(expect, 200000));
 }
 
+void RailRun::RecordControls(double t) {
+  // The controls in actuator order (servo_x, servo_z are the scene's only actuators).
+  std::vector<double>& c = instrument_->ctrl;
+  const size_t base = c.size();
+  c.resize(base + 2);
+  c[base + static_cast<size_t>(im_.servo_x)] = sched_.X(t);
+  c[base + static_cast<size_t>(im_.servo_z)] = sched_.Z(t);
+}
+
+void RailRun::Instrument(RunInstrumentation* out) {
+  instrument_ = out;
+  sim_->EnableProfile();
+}
+
 RailRunSummary RailRun::Execute(RunRecord& rec, const std::atomic<bool>* stop) {
   const auto wall0 = std::chrono::steady_clock::now();
   InitRecord(rec, index_);
@@ -169,6 +183,7 @@ RailRunSummary RailRun::Execute(RunRecord& rec, const std::atomic<bool>* stop) {
     // Drive the arm servos along the protocol and advance one step.
     sim_->SetControl(im_.servo_x, sched_.X(t));
     sim_->SetControl(im_.servo_z, sched_.Z(t));
+    if (instrument_) RecordControls(t);
     sim_->Step();
     ++sum_.steps;
     const bool held = t >= sched_.lift_end && std::isnan(sum_.gross_slip_onset_s);
@@ -196,6 +211,7 @@ RailRunSummary RailRun::Execute(RunRecord& rec, const std::atomic<bool>* stop) {
     TrackHealth(t);
   }
   Finish(rec);
+  if (instrument_) instrument_->profile = sim_->profile();
   sum_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return sum_;
 }

@@ -44,6 +44,8 @@ class RailRun {
   /// prepares its own copy of the model.
   RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int index, std::uint64_t seed);
 
+  /// Times every step's stages and records the controls into `out` (before Execute).
+  void Instrument(RunInstrumentation* out);
   /// Simulates the whole protocol into `rec`; throws SimulationError or Interrupted.
   RailRunSummary Execute(RunRecord& rec, const std::atomic<bool>* stop);
 
@@ -68,6 +70,7 @@ class RailRun {
   void RecordContacts(double t, RunRecord& rec);
   void TrackEvents(double t, double tf);
   void TrackHealth(double t);
+  void RecordControls(double t);
   void Finish(RunRecord& rec);
 
   const RailScenarioConfig& c_;
@@ -101,6 +104,8 @@ class RailRun {
   std::vector<std::uint8_t> valid_, ext_valid_;
   std::array<double, 3> origin_{};
   std::array<double, 9> rot_{};
+
+  RunInstrumentation* instrument_ = nullptr;
 
   // Run events and health.
   RailRunSummary sum_;

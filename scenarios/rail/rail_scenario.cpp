@@ -20,4 +20,13 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec, 
   return run.Execute(rec, stop);
 }
 
+RailRunSummary RailScenario::RunInstrumented(int index, std::uint64_t seed, RunRecord& rec,
+                                             RunInstrumentation& out) const {
+  RailRun run(cfg_, *ids_, index, seed);
+  run.Instrument(&out);
+  return run.Execute(rec, nullptr);
+}
+
+const CompiledModel& RailScenario::model() const { return *ids_->model; }
+
 }  // namespace tactip

@@ -7,10 +7,13 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scenarios/rail/rail_config.h"
 #include "scenarios/rail/run_health.h"
 #include "sensors/dataset.h"
+#include "sim/simulation.h"
+#include "sim/step_profile.h"
 
 namespace tactip {
 
@@ -43,6 +46,13 @@ class Interrupted : public std::runtime_error {
 
 struct RailSceneIds;
 
+/// What a speed measurement takes from one run: the step's cost split and the actuator
+/// controls of every step (to replay the same motion with bare mj_step).
+struct RunInstrumentation {
+  StepProfile profile;
+  std::vector<double> ctrl;  ///< nu values per step
+};
+
 /// Runs rail-protocol runs of one configuration. Thread-safe: Run() may be called from
 /// several threads at once (the compiled model is shared read-only).
 class RailScenario {
@@ -56,6 +66,10 @@ class RailScenario {
   /// when `*stop` becomes true.
   RailRunSummary Run(int index, std::uint64_t seed, RunRecord& record,
                      const std::atomic<bool>* stop = nullptr) const;
+  /// The same run, timing every stage of every step and recording the controls.
+  RailRunSummary RunInstrumented(int index, std::uint64_t seed, RunRecord& record, RunInstrumentation& out) const;
+  /// The compiled scene (shared read-only by the runs).
+  const CompiledModel& model() const;
 
   /// The MJCF text of the scene this scenario simulates.
   const std::string& xml() const;

@@ -1,0 +1,112 @@
+// The speed study: timing a run leaves its physics and output unchanged, bare mj_step
+// replays the same run, and `tactip bench --speed` prints the table and writes speed.csv
+// (or names an unknown scene).
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_helpers.h"
+#include "scenarios/rail.h"
+#include "scenarios/speed.h"
+
+namespace tactip {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliResult;
+using testing::RunTactip;
+using testing::Slurp;
+
+RailScenarioConfig ShortRun() {
+  RailScenarioConfig cfg;
+  cfg.rail.stimulus = "curved20";
+  cfg.rail.retract_speed_mm_s = 2.0;
+  cfg.rail.lift_mm = 10.0;
+  return cfg;
+}
+
+TEST(SpeedStudyTest, TimingARunChangesNeitherItsPhysicsNorItsRecord) {
+  const RailScenario scenario(ShortRun());
+  RunRecord plain, timed;
+  RunInstrumentation inst;
+  const RailRunSummary a = scenario.Run(0, 5, plain);
+  const RailRunSummary b = scenario.RunInstrumented(0, 5, timed, inst);
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.gross_slip_onset_s, b.gross_slip_onset_s);
+  ASSERT_EQ(plain.pos_px.size(), timed.pos_px.size());
+  EXPECT_EQ(plain.pos_px, timed.pos_px);
+  EXPECT_EQ(plain.normal_N, timed.normal_N);
+  EXPECT_EQ(plain.pin_slip, timed.pin_slip);
+  // Every step was timed and its controls kept for the bare replay.
+  EXPECT_EQ(inst.profile.steps, b.steps);
+  EXPECT_EQ(inst.ctrl.size(), static_cast<size_t>(2 * b.steps));
+  EXPECT_GT(inst.profile.step1_s, 0.0);
+  EXPECT_GT(inst.profile.solve_s, 0.0);
+  EXPECT_GT(inst.profile.friction_pass_s, 0.0);
+  EXPECT_GT(inst.profile.nefc_sum, inst.profile.ncon_sum);  // a contact is at least one row; the rail adds more
+}
+
+TEST(SpeedStudyTest, BareReplayRunsTheSameStepsOnTheSameModel) {
+  const RailScenario scenario(ShortRun());
+  RunRecord rec;
+  RunInstrumentation inst;
+  const RailRunSummary s = scenario.RunInstrumented(0, 5, rec, inst);
+  const double bare_s = ReplayBareSteps(scenario.model(), inst.ctrl);
+  EXPECT_GT(bare_s, 0.0);
+  // A replay of a different length is refused rather than timed.
+  std::vector<double> odd = inst.ctrl;
+  odd.pop_back();
+  EXPECT_THROW(ReplayBareSteps(scenario.model(), odd), std::invalid_argument);
+  EXPECT_GT(s.steps, 0);
+}
+
+class SpeedCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("tactip_speed_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(SpeedCliTest, PrintsTheTableAndWritesOneCsvRowPerScene) {
+  const CliResult r = RunTactip("bench --speed --scene \"rail curved20\" --set rail.retract_speed_mm_s=2 --set "
+                                "rail.lift_mm=10 --out " + (dir_ / "speed").string(),
+                                dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rail curved20"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cost split"), std::string::npos) << r.out;
+  std::istringstream csv(Slurp(dir_ / "speed" / "speed.csv"));
+  std::string header, row, extra;
+  ASSERT_TRUE(std::getline(csv, header));
+  ASSERT_TRUE(std::getline(csv, row));
+  EXPECT_FALSE(std::getline(csv, extra));
+  EXPECT_EQ(header.rfind("scene,sim_s,run_wall_s,physics_wall_s,bare_wall_s,rtf_run", 0), 0u) << header;
+  // sim_s, run, physics, bare wall times: the physics steps are part of the run.
+  std::vector<double> v;
+  std::istringstream cells(row.substr(row.find("\",") + 2));
+  for (std::string c; std::getline(cells, c, ',');) v.push_back(std::stod(c));
+  ASSERT_GE(v.size(), 8u);
+  EXPECT_GT(v[0], 1.0);
+  EXPECT_GT(v[1], 0.0);
+  EXPECT_LT(v[2], v[1]);
+  EXPECT_GT(v[3], 0.0);
+  EXPECT_NEAR(v[4], v[0] / v[1], 1e-3 * v[4]);  // rtf_run = sim_s / run_wall_s
+}
+
+TEST_F(SpeedCliTest, AnUnknownSceneIsNamedAndNothingRuns) {
+  const CliResult r = RunTactip("bench --speed --scene \"rail bumpy\" --out " + (dir_ / "speed").string(), dir_);
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("unknown speed scene 'rail bumpy'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("bench --speed: one run"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "speed" / "speed.csv"));
+}
+
+}  // namespace
+}  // namespace tactip
