@@ -16,6 +16,22 @@ void RailScenarioConfig::ValidateRules() const {
              fmt::format("must be >= 2 * sim.timestep_s = {} s (MuJoCo would silently soften it)",
                          2.0 * sim.timestep_s));
   }
+  // The press: no deeper than a TacTip tolerates, and towards the stimulus (a negative
+  // depth stops short of it: an empty contact).
+  const double deepest_mm = rail.press_depth_mm + rail.press_depth_jitter_mm;
+  if (deepest_mm > RailConfig::kMaxPressDepthMm) {
+    FailRule("rail.press_depth_jitter_mm", rail.press_depth_jitter_mm,
+             fmt::format("the deepest press, rail.press_depth_mm + jitter = {:.3g} mm, is beyond the {:.3g} mm a TacTip "
+                         "tolerates; use rail.press_depth_jitter_mm <= {:.3g}",
+                         deepest_mm, RailConfig::kMaxPressDepthMm, RailConfig::kMaxPressDepthMm - rail.press_depth_mm));
+  }
+  const double travel_mm = rail.approach_gap_mm + rail.press_depth_mm - rail.press_depth_jitter_mm;
+  if (travel_mm <= 0.0) {
+    FailRule("rail.press_depth_mm", rail.press_depth_mm,
+             fmt::format("the press would not move the sensor towards the stimulus (rail.approach_gap_mm + "
+                         "press_depth_mm - press_depth_jitter_mm = {:.3g} mm); use rail.press_depth_mm > {:.3g}",
+                         travel_mm, rail.press_depth_jitter_mm - rail.approach_gap_mm));
+  }
   // A run must end: the retraction (past the press plus 5 mm) within an hour of simulation.
   constexpr double kMaxRetractS = 3600.0;
   const double retract_mm = rail.approach_gap_mm + rail.press_depth_mm + rail.press_depth_jitter_mm + 5.0;
