@@ -1,5 +1,9 @@
 #include "scenarios/rail/rail_config.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "models/stability.h"
@@ -60,6 +64,35 @@ void RailScenarioConfig::ValidateRules() const {
                            mode.other_fix.empty() ? "" : " or " + mode.other_fix));
     }
   }
+}
+
+TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {
+  TimestepChoice c;
+  const StableTimestep stable = LargestStableTimestep(cfg.SceneSpec());
+  c.stable_s = stable.timestep_s;
+  c.stable_mode = stable.mode.name;
+  // The smallest bound wins (the first listed on a tie).
+  const double frame_s = 1.0 / cfg.sensor.frame_rate_hz;
+  const std::pair<double, std::string> bounds[] = {
+      {stable.timestep_s, "stability"},
+      {cfg.sim.timestep_s, "accuracy (the configured sim.timestep_s)"},
+      {0.5 * cfg.contact.timeconst_s, "the contact (contact.timeconst_s / 2)"},
+      {frame_s, "one camera frame (sensor.frame_rate_hz)"},
+  };
+  c.bound_s = bounds[0].first;
+  c.binding = bounds[0].second;
+  for (const auto& [value, what] : bounds) {
+    if (value < c.bound_s) {
+      c.bound_s = value;
+      c.binding = what;
+    }
+  }
+  // A frame is a whole number of steps. A relative 1e-9 keeps an exact divisor (2 ms of
+  // 10 ms) from being pushed to the next one by rounding; the last ulp is clipped so the
+  // step never exceeds the bound.
+  const long long steps = std::max(1LL, static_cast<long long>(std::ceil(frame_s / c.bound_s * (1.0 - 1e-9))));
+  c.timestep_s = std::min(frame_s / static_cast<double>(steps), c.bound_s);
+  return c;
 }
 
 RailSceneSpec RailScenarioConfig::SceneSpec() const {
