@@ -27,10 +27,12 @@ struct ObjectConfig {
 
 /// Rail rig and protocol (the `rail.` section).
 struct RailConfig {
+  /// Deepest indentation a TacTip tolerates, mm (press depth plus its jitter).
+  static constexpr double kMaxPressDepthMm = 7.0;
   std::string stimulus = "flat";       ///< flat, acrylic, curved80, curved40, curved20
   double friction_N = 0.005;           ///< rail dry friction (MuJoCo joint frictionloss)
   double damping_Ns_m = 0.02;          ///< rail viscous damping
-  double press_depth_mm = 3.0;         ///< indentation at the apex
+  double press_depth_mm = 3.0;         ///< indentation at the apex (negative: stops short, no contact)
   double press_depth_jitter_mm = 0.1;  ///< per-run uniform perturbation of the depth
   double approach_gap_mm = 2.0;        ///< initial gap between apex and stimulus
   double press_speed_mm_s = 2.0;       ///< mean speed of the press move
@@ -54,7 +56,9 @@ struct RailConfig {
       Bounds::Closed(0.0, 10.0));
     v("damping_Ns_m", damping_Ns_m, "N s/m", "Viscous damping of the rail (lubricant).", Bounds::Closed(0.0, 100.0));
     v("press_depth_mm", press_depth_mm, "mm",
-      "Indentation of the dome apex into the stimulus (a TacTip tolerates ~7 mm).", Bounds::LeftOpen(0.0, 7.0));
+      "Indentation of the dome apex into the stimulus (a TacTip tolerates ~7 mm). Negative: the press stops this "
+      "far short of the stimulus and the sensor presses nothing (an empty contact).",
+      Bounds::Closed(-kMaxPressDepthMm, kMaxPressDepthMm));
     v("press_depth_jitter_mm", press_depth_jitter_mm, "mm",
       "Per-run variation: depth drawn uniformly in press_depth_mm +- jitter. 0 switches it off.",
       Bounds::Closed(0.0, 2.0));

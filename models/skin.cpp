@@ -268,7 +268,8 @@ namespace {
 // that keeps a mode of frequency w stable at dt with a 20 % margin,
 // MaxStableTimestep(w, zeta) >= 1.2 dt.
 double StableDamping(double w, double mass, double timestep_s) {
-  const double x = 1.2 * timestep_s * w / (0.9 * 2.0);  // needed zeta + sqrt(zeta^2 + 1)
+  // needed zeta + sqrt(zeta^2 + 1)
+  const double x = SkinMechanics::kDampingRaiseMargin * timestep_s * w / (0.9 * 2.0);
   const double zeta = x > 1.0 ? (x * x - 1.0) / (2.0 * x) : 0.0;
   return 2.0 * zeta * w * mass;
 }

@@ -211,6 +211,9 @@ struct PinLattice {
 
 /// Spring constants and masses derived from SkinConfig (SI units).
 struct SkinMechanics {
+  /// A membrane lattice's damping floor keeps each mode's stable step this many times above
+  /// the timestep (NormalDamping, TipDamping).
+  static constexpr double kDampingRaiseMargin = 1.2;
   double cell_area_m2 = 0.0;        ///< hexagonal cell area per pin
   double k_normal_N_m = 0.0;        ///< gel column, along the pin normal
   double k_shear_N_m = 0.0;         ///< gel column, in shear (per pin)

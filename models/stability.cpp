@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -41,6 +42,7 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
   pin.omega = mech.StiffestOmega();
   const double c_normal = membrane ? mech.NormalDamping(spec.sim.timestep_s) : mech.pin_damping_Ns_m;
   pin.zeta = c_normal / (2.0 * mech.pin_mass_kg * pin.omega);
+  pin.damping_follows_timestep = membrane;
   pin.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, skin.thickness_mm, "
              "skin.pin_mass_g)";
   modes.push_back(pin);
@@ -48,6 +50,7 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
     StiffMode shear;
     shear.omega = mech.StiffestShearOmega();
     shear.zeta = mech.TipDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * shear.omega);
+    shear.damping_follows_timestep = true;
     shear.name = "the membrane lattice's shear mode (set by skin.thickness_mm, skin.skin_modulus_mpa, skin.ridge_*, "
                  "skin.pin_mass_g)";
     modes.push_back(shear);
@@ -68,6 +71,22 @@ StiffMode RailStiffestMode(const RailSceneSpec& spec) {
   const std::vector<StiffMode> modes = RailModes(spec);
   return *std::min_element(modes.begin(), modes.end(),
                            [](const StiffMode& a, const StiffMode& b) { return a.MaxTimestep() < b.MaxTimestep(); });
+}
+
+StableTimestep LargestStableTimestep(const RailSceneSpec& spec) {
+  // The modes with their physical damping (a vanishing step raises nothing).
+  RailSceneSpec physical = spec;
+  physical.sim.timestep_s = 1e-9;
+  StableTimestep best;
+  best.timestep_s = std::numeric_limits<double>::infinity();
+  for (const StiffMode& m : RailModes(physical)) {
+    // A membrane mode keeps its physical damping only while the step stays below its
+    // limit by the margin the model's damping floor keeps.
+    const double limit = m.damping_follows_timestep ? m.MaxTimestep() / SkinMechanics::kDampingRaiseMargin
+                                                    : m.MaxTimestep();
+    if (limit < best.timestep_s) best = {limit, m};
+  }
+  return best;
 }
 
 }  // namespace tactip

@@ -24,6 +24,9 @@ struct StiffMode {
   double zeta = 0.0;      ///< damping ratio (0 for the explicit contact touch-down)
   std::string name;       ///< which part it belongs to and the keys that set it
   std::string other_fix;  ///< besides a smaller timestep, what makes it stable ("" if nothing)
+  /// True for a membrane lattice's modes, whose joint damping the model raises where the
+  /// timestep would otherwise make them unstable (SkinMechanics::NormalDamping, TipDamping).
+  bool damping_follows_timestep = false;
   /// Largest stable timestep with the 0.9 safety factor, s.
   double MaxTimestep() const;
 };
@@ -33,6 +36,19 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec);
 
 /// The mode with the smallest stable timestep.
 StiffMode RailStiffestMode(const RailSceneSpec& spec);
+
+/// The largest timestep of a rail scene that the stability estimate accepts with the damping
+/// the config asks for, and the mode that sets it.
+struct StableTimestep {
+  double timestep_s = 0.0;  ///< largest step, s
+  StiffMode mode;           ///< the binding mode
+};
+
+/// The largest step at which every mode of RailModes is stable (0.9 safety factor) with its
+/// configured damping: a membrane lattice's modes count only up to the step at which the
+/// model would start raising their damping (SkinMechanics::kDampingRaiseMargin), so the step
+/// found never changes the physics. `spec.sim.timestep_s` is ignored.
+StableTimestep LargestStableTimestep(const RailSceneSpec& spec);
 
 /// The contact's touch-down mode.
 StiffMode ContactTouchdownMode(const ContactConfig& contact);

@@ -6,13 +6,22 @@ namespace tactip {
 
 namespace {
 
-RailScenarioConfig LoadRail(const ConfigSource& src) {
-  return LoadConfig<RailScenarioConfig>(src.yaml_path, src.overrides);
+// Defaults, file and overrides; then the chosen timestep, if asked for; then every rule.
+ResolvedConfig Resolve(const ConfigSource& src, const RailScenarioConfig& defaults) {
+  ResolvedConfig r;
+  r.config = ApplyConfig(src.yaml_path, src.overrides, defaults);
+  if (src.auto_timestep) {
+    r.timestep = ChooseTimestep(r.config);
+    r.config.sim.timestep_s = r.timestep->timestep_s;
+  }
+  ValidateConfig(r.config);
+  return r;
 }
 
-RailScenarioConfig LoadIncipient(const ConfigSource& src) {
-  return LoadConfig<RailScenarioConfig>(src.yaml_path, src.overrides, IncipientDefaults());
-}
+ResolvedConfig ResolveRail(const ConfigSource& src) { return Resolve(src, RailScenarioConfig{}); }
+ResolvedConfig ResolveIncipient(const ConfigSource& src) { return Resolve(src, IncipientDefaults()); }
+RailScenarioConfig LoadRail(const ConfigSource& src) { return ResolveRail(src).config; }
+RailScenarioConfig LoadIncipient(const ConfigSource& src) { return ResolveIncipient(src).config; }
 
 }  // namespace
 
@@ -30,6 +39,7 @@ const std::vector<ScenarioEntry>& Scenarios() {
       {"rail",
        "low-friction rail rig: press the smooth TacTip on a stimulus, lift 50 mm, retract until the object falls",
        LoadRail,
+       ResolveRail,
        [](const ConfigSource& s) { return DescribeConfig(LoadRail(s)); },
        [](const ConfigSource& s) { return BuildRailScene(LoadRail(s).SceneSpec()).xml; },
        [](const ConfigSource& s, const GenerateOptions& o) { return GenerateRailDataset(LoadRail(s), o); }},
@@ -37,6 +47,7 @@ const std::vector<ScenarioEntry>& Scenarios() {
        "transparent-acrylic rig: the rail protocol on a clear 10 mm acrylic plate with an external camera; "
        "fingerprint-v2 skin by default (--skin smooth|fingerprint-v1|fingerprint-v2), retraction 0.3 mm/s",
        LoadIncipient,
+       ResolveIncipient,
        [](const ConfigSource& s) { return DescribeConfig(LoadIncipient(s)); },
        [](const ConfigSource& s) { return BuildRailScene(LoadIncipient(s).SceneSpec()).xml; },
        [](const ConfigSource& s, const GenerateOptions& o) { return GenerateRailDataset(LoadIncipient(s), o); }},

@@ -3,6 +3,7 @@
 // through this registry.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,15 @@ namespace tactip {
 struct ConfigSource {
   std::string yaml_path;               ///< empty: defaults only
   std::vector<std::string> overrides;  ///< "key=value", applied after the file
+  /// Choose sim.timestep_s by ChooseTimestep after the file and the overrides (the step they
+  /// configure is the upper cap), before the config is validated.
+  bool auto_timestep = false;
+};
+
+/// A scenario's config as resolved from a ConfigSource.
+struct ResolvedConfig {
+  RailScenarioConfig config;              ///< validated
+  std::optional<TimestepChoice> timestep; ///< the step chosen (ConfigSource::auto_timestep)
 };
 
 /// A registered scenario.
@@ -24,6 +34,8 @@ struct ScenarioEntry {
   std::string description;  ///< one line for `tactip scenarios`
   /// The resolved, validated config (throws InputError).
   std::function<RailScenarioConfig(const ConfigSource&)> load;
+  /// The same with the timestep chosen, if it was (throws InputError).
+  std::function<ResolvedConfig(const ConfigSource&)> resolve;
   /// Documentation of every config field (with defaults, or with the source applied).
   std::function<std::vector<FieldDoc>(const ConfigSource&)> describe;
   /// The MJCF of the scene the scenario builds for this config.

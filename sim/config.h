@@ -193,17 +193,28 @@ std::string ConfigToYaml(const Config& cfg) {
   return FieldsToYaml(DescribeConfig(cfg));
 }
 
-/// Loads a config: defaults, then the YAML file (if `yaml_path` is non-empty), then the
-/// `key=value` overrides in order; validates the result. Throws InputError.
+/// Applies the YAML file (if `yaml_path` is non-empty), then the `key=value` overrides in
+/// order, to `cfg` and checks every field's bounds, but not the cross-field rules (for a
+/// caller that derives fields before the full check). Throws InputError.
 template <class Config>
-Config LoadConfig(const std::string& yaml_path, const std::vector<std::string>& overrides,
-                  Config cfg = Config{}) {
+Config ApplyConfig(const std::string& yaml_path, const std::vector<std::string>& overrides, Config cfg = Config{}) {
   if (!yaml_path.empty()) ApplyFlat(cfg, FlattenYamlFile(yaml_path));
   for (const auto& o : overrides) {
     auto [key, value] = ParseAssignment(o);
     ApplyFlat(cfg, FlatConfig{{key, value}});
   }
-  ValidateConfig(cfg);
+  BoundsVisitor v;
+  cfg.Visit(v);
+  return cfg;
+}
+
+/// Loads a config: defaults, then the YAML file (if `yaml_path` is non-empty), then the
+/// `key=value` overrides in order; validates the result. Throws InputError.
+template <class Config>
+Config LoadConfig(const std::string& yaml_path, const std::vector<std::string>& overrides,
+                  Config cfg = Config{}) {
+  cfg = ApplyConfig(yaml_path, overrides, std::move(cfg));
+  cfg.ValidateRules();
   return cfg;
 }
 

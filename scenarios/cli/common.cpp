@@ -33,8 +33,27 @@ void ConfigArgs::Add(CLI::App* c) {
                 "variant's ridge/thickness/pin keys; applied before --set).");
 }
 
+void ConfigArgs::AddAutoTimestep(CLI::App* c) {
+  c->add_flag("--auto-timestep", auto_timestep,
+              "Choose sim.timestep_s: the largest step that is stable for every timestep-limiting mode (damping "
+              "as configured), at most the configured sim.timestep_s (2 ms unless set), contact.timeconst_s / 2 and "
+              "one camera frame, rounded down to a whole fraction of the frame period. Prints it on stderr.");
+}
+
+ResolvedConfig ResolveAndReport(const ScenarioEntry& entry, const ConfigSource& src) {
+  ResolvedConfig r = entry.resolve(src);
+  if (r.timestep) {
+    const TimestepChoice& t = *r.timestep;
+    std::fprintf(stderr,
+                 "auto-timestep: sim.timestep_s = %.6g s (bound %.6g s by %s; largest stable step %.6g s, set by %s)\n",
+                 t.timestep_s, t.bound_s, t.binding.c_str(), t.stable_s, t.stable_mode.c_str());
+  }
+  return r;
+}
+
 ConfigSource ConfigArgs::Source() const {
   ConfigSource src;
+  src.auto_timestep = auto_timestep;
   src.yaml_path = config_path;
   if (!skin.empty()) src.overrides = SkinPreset(skin);
   if (!std::isnan(speed_mm_s)) src.overrides.push_back(fmt::format("rail.retract_speed_mm_s={}", speed_mm_s));

@@ -27,12 +27,19 @@ struct ConfigArgs {
   double speed_mm_s = std::nan("");///< --speed-mm-s (NaN: not given)
   std::string stimulus;            ///< --stimulus
   std::string skin;                ///< --skin preset
+  bool auto_timestep = false;      ///< --auto-timestep
 
   /// Registers the options on `c` (the scenario as a required positional).
   void Add(CLI::App* c);
+  /// Registers --auto-timestep on `c`.
+  void AddAutoTimestep(CLI::App* c);
   /// The config source: file, skin preset, shortcuts, then --set in order.
   ConfigSource Source() const;
 };
+
+/// Resolves `src` for `entry` (which validates it) and, when it asks for --auto-timestep,
+/// prints the chosen step and what binds it on stderr.
+ResolvedConfig ResolveAndReport(const ScenarioEntry& entry, const ConfigSource& src);
 
 /// Prints a dataset's header, one line per run, totals and (optionally) the stored config.
 void PrintDatasetSummary(const std::string& path, bool with_config);

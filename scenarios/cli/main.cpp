@@ -14,6 +14,7 @@
 #include "scenarios/cli/accuracy_command.h"
 #include "scenarios/cli/detect_commands.h"
 #include "scenarios/cli/scenario_commands.h"
+#include "scenarios/cli/stability_commands.h"
 #include "scenarios/cli/study_commands.h"
 #include "scenarios/rail.h"
 #include "sim/config.h"
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
       tactip::cli::AddScenarioCommands(app, &g_stop),
       tactip::cli::AddStudyCommands(app, &g_stop),
       tactip::cli::AddAccuracyCommand(app, &g_stop),
+      tactip::cli::AddStabilityCommands(app, &g_stop),
       tactip::cli::AddDetectorCommands(app, &g_stop),
   };
   try {
@@ -84,7 +86,7 @@ int main(int argc, char** argv) {
   }
   // Long simulations stop cleanly on Ctrl-C; other commands keep the default handling
   // (their outputs are written atomically at the end).
-  for (const char* name : {"generate", "merge", "sweep", "bench"}) {
+  for (const char* name : {"generate", "merge", "sweep", "bench", "stability"}) {
     if (app.got_subcommand(name)) {
       std::signal(SIGINT, OnSignal);
       std::signal(SIGTERM, OnSignal);

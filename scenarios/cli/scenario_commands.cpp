@@ -31,6 +31,7 @@ struct ScenarioArgs {
 
 // tactip config: the table of keys, or the resolved config as (commented) YAML.
 int RunConfig(const ScenarioEntry& entry, const ConfigSource& src, const ScenarioArgs& a) {
+  ResolveAndReport(entry, src);
   const auto fields = entry.describe(src);
   if (a.as_yaml && a.with_comments) {
     const std::string header = fmt::format(
@@ -55,6 +56,7 @@ int RunConfig(const ScenarioEntry& entry, const ConfigSource& src, const Scenari
 // tactip export-mjcf: the scene's MJCF to a file or standard output.
 int RunExport(const ScenarioEntry& entry, const ConfigSource& src, const std::string& out) {
   if (!out.empty()) CheckWritableLocation(out);
+  ResolveAndReport(entry, src);
   const std::string xml = entry.export_mjcf(src);
   if (out.empty()) {
     std::printf("%s", xml.c_str());
@@ -79,7 +81,7 @@ void PrintRunProgress(int done, int total, int idx, const RailRunSummary& s) {
 // tactip generate: simulate and write the dataset, then print its summary.
 int RunGenerate(const ScenarioEntry& entry, const ConfigSource& src, const ScenarioArgs& a,
                 const std::atomic<bool>* stop) {
-  entry.describe(src);  // validates the config before anything is printed or written
+  ResolveAndReport(entry, src);  // validates the config before anything is printed or written
   GenerateOptions opts;
   opts.out_path = a.out.empty() ? entry.name + ".h5" : a.out;
   if (!a.shard.empty()) opts.shard = ParseShardOption(a.shard, a.runs);
@@ -129,6 +131,7 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
 
   auto* gen = app.add_subcommand("generate", "Simulate runs of a scenario and write a labelled HDF5 dataset.");
   a->config.Add(gen);
+  a->config.AddAutoTimestep(gen);
   gen->add_option("--runs", a->runs, "Number of runs (default 4).")->check(CLI::Range(1, 100000));
   gen->add_option("--seed", a->seed, "Master seed; run i derives its own seed from it (default 1).");
   gen->add_option("--out", a->out, "Output HDF5 file (default SCENARIO.h5); written atomically.");
@@ -154,10 +157,12 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
 
   auto* exp = app.add_subcommand("export-mjcf", "Write the exact MuJoCo model (MJCF) a scenario builds.");
   a->config.Add(exp);
+  a->config.AddAutoTimestep(exp);
   exp->add_option("--out", a->out, "Output XML file (default: standard output).");
 
   auto* cfg = app.add_subcommand("config", "List every config key of a scenario with unit, range and meaning.");
   a->config.Add(cfg);
+  a->config.AddAutoTimestep(cfg);
   cfg->add_flag("--yaml", a->as_yaml, "Print the resolved config as YAML instead of the table.");
   cfg->add_flag("--comments", a->with_comments, "With --yaml: each key's meaning and unit as a comment above it.");
 

@@ -1,5 +1,9 @@
 #include "scenarios/rail/rail_config.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "models/stability.h"
@@ -15,6 +19,22 @@ void RailScenarioConfig::ValidateRules() const {
     FailRule("contact.timeconst_s", contact.timeconst_s,
              fmt::format("must be >= 2 * sim.timestep_s = {} s (MuJoCo would silently soften it)",
                          2.0 * sim.timestep_s));
+  }
+  // The press: no deeper than a TacTip tolerates, and towards the stimulus (a negative
+  // depth stops short of it: an empty contact).
+  const double deepest_mm = rail.press_depth_mm + rail.press_depth_jitter_mm;
+  if (deepest_mm > RailConfig::kMaxPressDepthMm) {
+    FailRule("rail.press_depth_jitter_mm", rail.press_depth_jitter_mm,
+             fmt::format("the deepest press, rail.press_depth_mm + jitter = {:.3g} mm, is beyond the {:.3g} mm a TacTip "
+                         "tolerates; use rail.press_depth_jitter_mm <= {:.3g}",
+                         deepest_mm, RailConfig::kMaxPressDepthMm, RailConfig::kMaxPressDepthMm - rail.press_depth_mm));
+  }
+  const double travel_mm = rail.approach_gap_mm + rail.press_depth_mm - rail.press_depth_jitter_mm;
+  if (travel_mm <= 0.0) {
+    FailRule("rail.press_depth_mm", rail.press_depth_mm,
+             fmt::format("the press would not move the sensor towards the stimulus (rail.approach_gap_mm + "
+                         "press_depth_mm - press_depth_jitter_mm = {:.3g} mm); use rail.press_depth_mm > {:.3g}",
+                         travel_mm, rail.press_depth_jitter_mm - rail.approach_gap_mm));
   }
   // A run must end: the retraction (past the press plus 5 mm) within an hour of simulation.
   constexpr double kMaxRetractS = 3600.0;
@@ -44,6 +64,35 @@ void RailScenarioConfig::ValidateRules() const {
                            mode.other_fix.empty() ? "" : " or " + mode.other_fix));
     }
   }
+}
+
+TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {
+  TimestepChoice c;
+  const StableTimestep stable = LargestStableTimestep(cfg.SceneSpec());
+  c.stable_s = stable.timestep_s;
+  c.stable_mode = stable.mode.name;
+  // The smallest bound wins (the first listed on a tie).
+  const double frame_s = 1.0 / cfg.sensor.frame_rate_hz;
+  const std::pair<double, std::string> bounds[] = {
+      {stable.timestep_s, "stability"},
+      {cfg.sim.timestep_s, "accuracy (the configured sim.timestep_s)"},
+      {0.5 * cfg.contact.timeconst_s, "the contact (contact.timeconst_s / 2)"},
+      {frame_s, "one camera frame (sensor.frame_rate_hz)"},
+  };
+  c.bound_s = bounds[0].first;
+  c.binding = bounds[0].second;
+  for (const auto& [value, what] : bounds) {
+    if (value < c.bound_s) {
+      c.bound_s = value;
+      c.binding = what;
+    }
+  }
+  // A frame is a whole number of steps. A relative 1e-9 keeps an exact divisor (2 ms of
+  // 10 ms) from being pushed to the next one by rounding; the last ulp is clipped so the
+  // step never exceeds the bound.
+  const long long steps = std::max(1LL, static_cast<long long>(std::ceil(frame_s / c.bound_s * (1.0 - 1e-9))));
+  c.timestep_s = std::min(frame_s / static_cast<double>(steps), c.bound_s);
+  return c;
 }
 
 RailSceneSpec RailScenarioConfig::SceneSpec() const {

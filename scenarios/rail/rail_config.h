@@ -2,6 +2,8 @@
 // Configuration of the rail protocol (the `rail` and `incipient` scenarios): every
 // section, the cross-field rules and the scene it describes.
 
+#include <string>
+
 #include "models/rail_rig.h"
 #include "scenarios/rail/run_health.h"
 #include "sensors/camera.h"
@@ -41,5 +43,21 @@ struct RailScenarioConfig {
   /// The scene spec for this config (deepest press includes the depth jitter).
   RailSceneSpec SceneSpec() const;
 };
+
+/// The step `--auto-timestep` picks for a config and what binds it.
+struct TimestepChoice {
+  double timestep_s = 0.0;  ///< the chosen step: the camera frame period divided by a whole number
+  double bound_s = 0.0;     ///< the smallest of the bounds, before rounding down to the frame period
+  std::string binding;      ///< which bound that is: stability, accuracy, the contact or one camera frame
+  double stable_s = 0.0;    ///< the largest stable step (LargestStableTimestep)
+  std::string stable_mode;  ///< the mode that sets it
+};
+
+/// The largest step for `cfg` that is stable (every timestep-limiting mode, damping as
+/// configured), no larger than the configured sim.timestep_s (the accuracy cap: 2 ms by
+/// default), no larger than contact.timeconst_s / 2 (the contact is kept as configured)
+/// and no longer than one camera frame, rounded down so that a frame is a whole number of
+/// steps. Only `cfg`'s bounds need to hold; its cross-field rules are not checked.
+TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg);
 
 }  // namespace tactip

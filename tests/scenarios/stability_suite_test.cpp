@@ -1,0 +1,241 @@
+// The stability suite and the automatic timestep: every refusal of the suite with its message
+// (through the library and the command line, exit code 2), the case table, one healthy and
+// one refused case through `tactip stability --case`, the empty contact, and the step that
+// --auto-timestep picks (stable, refused 10 % above, smaller for a stiff skin). The whole
+// suite takes ~40 s on 2 cores but exits 1 while the fingerprint-skin and fast-retraction
+// cases are unhealthy (README, "Stability suite"), so only representative cases run here.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "cli_helpers.h"
+#include "input_error.h"
+#include "models/stability.h"
+#include "scenarios/stability_suite.h"
+
+namespace fs = std::filesystem;
+
+namespace tactip {
+namespace {
+
+using testing::CliResult;
+
+// Every refusal of the suite: its case and the message it must give (fragments).
+struct Refusal {
+  const char* name;
+  std::vector<std::string> fragments;
+};
+const Refusal kRefusals[] = {
+    {"gel-x100",
+     {"sim.timestep_s = 0.002: unstable: exceeds the limit 0.000761 s of the skin's pin normal mode",
+      "use sim.timestep_s <= 0.000761"}},
+    {"skin-x100",
+     {"sim.timestep_s = 0.002: unstable: exceeds the limit 0.000216 s of the skin's pin normal mode",
+      "use sim.timestep_s <= 0.000216"}},
+    {"dt-5ms",
+     {"sim.timestep_s = 0.005: unstable: exceeds the limit 0.00255 s of the skin's pin normal mode",
+      "use sim.timestep_s <= 0.00255"}},
+    {"depth-7.5mm", {"rail.press_depth_mm = 7.5: must be <= 7"}},
+    {"depth-7mm-jitter",
+     {"rail.press_depth_jitter_mm = 0.5: the deepest press, rail.press_depth_mm + jitter = 7.5 mm, is beyond the 7 mm "
+      "a TacTip tolerates; use rail.press_depth_jitter_mm <= 0"}},
+};
+
+std::vector<std::string> RailKeys() {
+  std::vector<std::string> keys;
+  for (const auto& f : FindScenario("rail").describe(ConfigSource{})) keys.push_back(f.key);
+  return keys;
+}
+
+TEST(StabilitySuiteTest, CasesHaveUniqueNamesAndEveryRefusalIsClear) {
+  // Every case either loads or is refused on one line naming a key and a safe value;
+  // exactly the refusals listed above are refused.
+  std::set<std::string> names, refused;
+  const auto keys = RailKeys();
+  for (const auto& c : StabilityCases()) {
+    EXPECT_TRUE(names.insert(c.name).second) << "duplicate case " << c.name;
+    const std::string msg = InputErrorOf([&] { FindScenario(c.scenario).resolve(StabilityCaseSource(c)); });
+    if (msg.empty()) continue;
+    refused.insert(c.name);
+    EXPECT_TRUE(RefusalIsClear(msg, keys)) << c.name << ": " << msg;
+  }
+  std::set<std::string> expected;
+  for (const auto& r : kRefusals) expected.insert(r.name);
+  EXPECT_EQ(refused, expected);
+}
+
+TEST(StabilitySuiteTest, RefusalMessagesNameTheParameterAndASafeValue) {
+  for (const auto& r : kRefusals) {
+    const StabilityResult res = RunStabilityCase(FindStabilityCase(r.name));
+    EXPECT_EQ(res.outcome, CaseOutcome::kRefused) << r.name << ": " << res.message;
+    EXPECT_FALSE(res.run.has_value()) << r.name << " must not run";
+    for (const auto& f : r.fragments) EXPECT_NE(res.message.find(f), std::string::npos) << r.name << ": " << res.message;
+  }
+}
+
+TEST(StabilitySuiteTest, RefusalIsClearOnlyForOneLineNamingAKeyAndASafeValue) {
+  const auto keys = RailKeys();
+  EXPECT_TRUE(RefusalIsClear("sim.timestep_s = 0.004: unstable: ...; use sim.timestep_s <= 0.00255", keys));
+  EXPECT_TRUE(RefusalIsClear("rail.press_depth_mm = 7.5: must be <= 7", keys));
+  EXPECT_FALSE(RefusalIsClear("unstable: use a smaller step", keys)) << "names no key";
+  EXPECT_FALSE(RefusalIsClear("rail.press_depth_mm = 7.5: too deep", keys)) << "names no safe value";
+  EXPECT_FALSE(RefusalIsClear("rail.press_depth_mm = 7.5: must be <= 7\nmore", keys)) << "two lines";
+}
+
+TEST(StabilitySuiteTest, EmptyContactRunsWithoutTouchingAndLeavesTheObject) {
+  const StabilityResult r = RunStabilityCase(FindStabilityCase("empty-contact"));
+  ASSERT_TRUE(r.run.has_value()) << r.message;
+  EXPECT_EQ(r.outcome, CaseOutcome::kHealthy) << r.message;
+  EXPECT_FALSE(r.run->held);
+  EXPECT_TRUE(std::isnan(r.run->gross_slip_onset_s));
+  EXPECT_EQ(r.run->mujoco_warnings, 0);
+}
+
+TEST(StabilitySuiteTest, APressThatDoesNotMoveTowardsTheStimulusIsRefused) {
+  RailScenarioConfig c;
+  c.rail.press_depth_mm = -2.0;  // the default approach gap is 2 mm, jitter 0.1 mm
+  EXPECT_EQ(InputErrorOf([&] { ValidateConfig(c); }),
+            "rail.press_depth_mm = -2: the press would not move the sensor towards the stimulus (rail.approach_gap_mm "
+            "+ press_depth_mm - press_depth_jitter_mm = -0.1 mm); use rail.press_depth_mm > -1.9");
+  c.rail.press_depth_mm = -1.8;
+  EXPECT_EQ(InputErrorOf([&] { ValidateConfig(c); }), "");
+}
+
+// --- the automatic timestep -------------------------------------------------------------
+
+RailScenarioConfig Stiff() {
+  RailScenarioConfig c;
+  c.skin.gel_modulus_kpa = 10000.0;
+  return c;
+}
+
+TEST(AutoTimestepTest, DefaultsKeepTheTwoMillisecondStep) {
+  const TimestepChoice t = ChooseTimestep(RailScenarioConfig{});
+  EXPECT_DOUBLE_EQ(t.timestep_s, 0.002);
+  EXPECT_NE(t.binding.find("accuracy"), std::string::npos) << t.binding;
+  EXPECT_NEAR(t.stable_s, 0.00255, 1e-5);
+  EXPECT_NE(t.stable_mode.find("pin normal mode"), std::string::npos) << t.stable_mode;
+}
+
+TEST(AutoTimestepTest, StiffSkinGetsASmallerStableStepRefusedTenPercentAbove) {
+  RailScenarioConfig c = Stiff();
+  const TimestepChoice t = ChooseTimestep(c);
+  EXPECT_LT(t.timestep_s, ChooseTimestep(RailScenarioConfig{}).timestep_s);
+  EXPECT_EQ(t.binding, "stability");
+  EXPECT_NE(t.stable_mode.find("the skin's pin normal mode"), std::string::npos) << t.stable_mode;
+  // Stable: within the limit the check uses, and the config passes.
+  c.sim.timestep_s = t.timestep_s;
+  EXPECT_LE(t.timestep_s, RailStiffestMode(c.SceneSpec()).MaxTimestep());
+  EXPECT_EQ(InputErrorOf([&] { ValidateConfig(c); }), "");
+  // 10 % above the limit is refused.
+  c.sim.timestep_s = 1.1 * t.bound_s;
+  EXPECT_NE(InputErrorOf([&] { ValidateConfig(c); }).find("unstable: exceeds the limit"), std::string::npos);
+  // A frame is a whole number of steps.
+  const double steps = 0.01 / t.timestep_s;
+  EXPECT_NEAR(steps, std::round(steps), 1e-9);
+}
+
+TEST(AutoTimestepTest, ContactTimeConstantAndFrameBoundTheStep) {
+  RailScenarioConfig c;
+  c.contact.timeconst_s = 0.003;  // dt <= 1.5 ms; 10 ms / 7 steps
+  TimestepChoice t = ChooseTimestep(c);
+  EXPECT_NE(t.binding.find("contact.timeconst_s"), std::string::npos) << t.binding;
+  EXPECT_NEAR(t.timestep_s, 0.01 / 7, 1e-15);
+  // The configured step is the cap: 5 ms asked for gives the stable limit, rounded to 10 ms / 4.
+  c = RailScenarioConfig{};
+  c.sim.timestep_s = 0.005;
+  c.contact.timeconst_s = 0.01;
+  t = ChooseTimestep(c);
+  EXPECT_NE(t.binding.find("stability"), std::string::npos) << t.binding;
+  EXPECT_DOUBLE_EQ(t.timestep_s, 0.0025);
+}
+
+TEST(AutoTimestepTest, MembraneSkinKeepsItsPhysicalDamping) {
+  // fingerprint-v2: its stiff shear mode sets the step at which the model need not raise
+  // the lattice's damping.
+  RailScenarioConfig c = LoadConfig<RailScenarioConfig>("", SkinPreset("fingerprint-v2"));
+  const TimestepChoice t = ChooseTimestep(c);
+  EXPECT_EQ(t.binding, "stability");
+  EXPECT_NE(t.stable_mode.find("membrane lattice's shear mode"), std::string::npos) << t.stable_mode;
+  const PinLattice lattice = PinLattice::Build(c.skin);
+  const SkinMechanics m = SkinMechanics::From(c.skin, lattice);
+  EXPECT_NEAR(m.TipDamping(t.timestep_s), m.tip_damping_Ns_m, 1e-12);
+  EXPECT_NEAR(m.NormalDamping(t.timestep_s), m.pin_damping_Ns_m, 1e-12);
+  EXPECT_GT(m.TipDamping(1.1 * t.bound_s), m.tip_damping_Ns_m) << "just above, the damping would be raised";
+}
+
+// --- the command line ---------------------------------------------------------------------
+
+class StabilityCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("tactip_stability_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
+  fs::path dir_;
+};
+
+TEST_F(StabilityCliTest, OneHealthyAndOneRefusedCaseWithTheirOutcomes) {
+  const CliResult r = Run("stability --case smooth-flat --case gel-x100 --quiet --out " + (dir_ / "out").string());
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("smooth-flat              healthy"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gel-x100                 refused"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("    sim.timestep_s = 0.002: unstable"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 case(s): 1 healthy, 1 refused, 0 FAILED"), std::string::npos) << r.out;
+  const std::string csv = testing::Slurp(dir_ / "out" / "stability.csv");
+  EXPECT_EQ(csv.rfind("case,scenario,sets,expect,outcome,", 0), 0u) << csv;
+  EXPECT_NE(csv.find("\nsmooth-flat,rail,--skin smooth rail.stimulus=flat,any,healthy,0.002,1,"), std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("\ngel-x100,rail,skin.gel_modulus_kpa=10000,any,refused,-,"), std::string::npos) << csv;
+}
+
+TEST_F(StabilityCliTest, ListNamesEveryCaseAndAnUnknownCaseIsExitCode2) {
+  const CliResult l = Run("stability --list");
+  ASSERT_EQ(l.code, 0) << l.err;
+  for (const auto& c : StabilityCases()) EXPECT_NE(l.out.find(c.name + " "), std::string::npos) << c.name;
+  const CliResult u = Run("stability --case nosuch");
+  EXPECT_EQ(u.code, 2);
+  EXPECT_EQ(u.err, "tactip: --case 'nosuch': unknown case ('tactip stability --list' lists them)\n");
+}
+
+TEST_F(StabilityCliTest, EveryRefusalIsOneLineWithExitCode2FromGenerate) {
+  for (const auto& r : kRefusals) {
+    const StabilityCase& c = FindStabilityCase(r.name);
+    std::string args = "generate rail --runs 1 --out " + (dir_ / "x.h5").string();
+    for (const auto& s : StabilityCaseSource(c).overrides) args += " --set " + s;
+    const CliResult g = Run(args);
+    EXPECT_EQ(g.code, 2) << r.name << "\n" << g.err;
+    EXPECT_EQ(std::count(g.err.begin(), g.err.end(), '\n'), 1) << r.name << "\n" << g.err;
+    for (const auto& f : r.fragments) EXPECT_NE(g.err.find(f), std::string::npos) << r.name << "\n" << g.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.h5"));
+  }
+  const CliResult e = Run("generate rail --set rail.press_depth_mm=-2 --out " + (dir_ / "x.h5").string());
+  EXPECT_EQ(e.code, 2);
+  EXPECT_NE(e.err.find("use rail.press_depth_mm > -1.9"), std::string::npos) << e.err;
+}
+
+TEST_F(StabilityCliTest, AutoTimestepPrintsTheStepAndWhatBindsIt) {
+  const CliResult r = Run("config rail --yaml --auto-timestep --set skin.gel_modulus_kpa=10000");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("auto-timestep: sim.timestep_s = 0.000714286 s (bound 0.000760583 s by stability; largest "
+                       "stable step 0.000760583 s, set by the skin's pin normal mode"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("timestep_s: 0.000714285714"), std::string::npos) << r.out;
+  // Without the flag the same config is refused, naming the safe step.
+  const CliResult s = Run("config rail --yaml --set skin.gel_modulus_kpa=10000");
+  EXPECT_EQ(s.code, 2);
+  EXPECT_NE(s.err.find("use sim.timestep_s <= 0.000761"), std::string::npos) << s.err;
+}
+
+}  // namespace
+}  // namespace tactip
