@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/friction_plane.h"
+#include "sim/pressing_axis.h"
 
 namespace tactip {
 

@@ -28,6 +28,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/delassus.h"
+#include "sim/friction_rows.h"
+
 struct mjModel_;
 struct mjData_;
 
@@ -61,74 +64,44 @@ class FrictionPass {
   struct Stick {
     std::uint64_t key = 0;
     double s[3] = {0, 0, 0};  // tangential displacement since it stuck, world frame
+    double f[3] = {0, 0, 0};  // friction force at the end of the last step, world frame
     double normal_N = 0.0;    // normal force in the last step
     bool sliding = false;     // on its friction limit at the end of the last step
     bool seen = false;
   };
 
-  int CollectRows(const mjModel_* m, mjData_* d);
   void BuildSystem(const mjModel_* m, mjData_* d);
   void ContactSprings(const mjModel_* m, const mjData_* d);
   void StartFromLastState(const mjData_* d);
-  bool LowRankDelassus(const mjModel_* m, mjData_* d);
-  void DenseDelassus(const mjModel_* m, mjData_* d);
-  double Arl(int r, int l) const;
-  void MulA(bool clamped_only, double* out) const;
-  void GatherForces();
-  double RowTimesForces(int r) const;
-  void SetForce(int l, double f);
   int DryDof(const mjData_* d, int k) const;
   void SolveFree();
-  void SolveWoodbury(int ns);
-  void FactorCompliant(int ns);
-  void CompliantSolve(int ns, const double* in, double* out) const;
-  double RowTimes(int ns, int row, const double* x) const;
-  double RigidWeight(int ns, int k) const;
-  void SolveDense(int ns);
   int UpdateClampedGroups();
   int ClampOutsideLimits();
   void SaveState(const mjModel_* m, const mjData_* d);
   void WriteBack(const mjModel_* m, mjData_* d);
   bool UseDampedMass(const mjModel_* m, mjData_* d, bool on);
   Stick* FindStick(std::uint64_t key);
+  Stick& StickOf(std::uint64_t key);
 
   FrictionPassSettings settings_;
   int nv_ = 0, n_ = 0;             // dofs; friction rows in use
-  std::vector<int> row_;           // efc index of each friction row
-  std::vector<int> contact_;       // its contact (-1: dry friction)
-  std::vector<int> group_size_;    // rows in the row's group (condim - 1, or 1 for dry friction)
-  std::vector<double> limit_;      // normal force (contact) or frictionloss (dry friction)
-  std::vector<double> mu_;         // friction coefficient of the row's direction (1 for dry friction)
+  FrictionRows rows_;
+  Delassus delassus_;
   std::vector<double> reg_;        // per row: R = 1 / (h (K h + C)), 0 for rigid rows
   std::vector<double> spring_;     // per row: the anchor spring's pull, R K s (rigid: s / h^2)
-  std::vector<double> disp_;       // per row: s along the row's tangent
+  std::vector<double> disp_;       // per row: s along the row's direction
   std::vector<double> stiff_;      // per row: K (0 for rigid rows)
+  std::vector<double> capacity_;   // per row: mu N (or frictionloss)
   std::vector<char> clamped_;      // per row: held on its limit
-  std::vector<double> Js_, X_;     // n x nv: friction-row Jacobian J, (M + h B)^-1 J'
-  std::vector<int> nz_col_, nz_count_;  // per row: the non-zero columns of J and their count
-  std::vector<double> nz_val_;     // per row: J's values in those columns
-  std::vector<double> af_;         // per row: A f (scratch)
-  std::vector<double> A_;          // n x n: J (M + h B)^-1 J', stick velocity per unit friction
-  std::vector<double> target_;     // per row: -(v / h + Js qacc0 - A f0), the rigid-stick right-hand side
-  std::vector<double> f0_, f_;     // friction forces: main solver's, and the new ones
-  std::vector<double> L_, rhs_, x_;  // Cholesky factor and vectors of the free subsystem
+  std::vector<double> target_;     // per row: -(v / h + J qacc_nf), the rigid-stick right-hand side
+  std::vector<double> f0_, f_, af_;  // friction forces: the main solver's, the pass's; A f
+  std::vector<double> rhs_, x_;    // the free subsystem
   std::vector<int> free_;          // local indices of the free rows
   std::vector<double> qfrc_, qacc0_;  // nv scratch; (M + h B)^-1 (smooth + constraint forces but friction)
   std::vector<double> qfrc_nf_;    // nv: constraint forces without friction
+  std::vector<double> qLD_, qLDiagInv_, qLDiagSqrtInv_, qM_diag_;  // M's factor and diagonal, kept aside
   std::vector<Stick> sticks_;      // contacts' stick states, sorted by key
   std::vector<char> dof_sliding_;  // per dof: its dry friction was on its limit at the end of the last step
-  // Low-rank Delassus: the k shared columns C, P = ((M + h B)^-1)_CC, the rows' compact
-  // J_C and Z = J_C P, P's Cholesky factor and inverse.
-  bool low_rank_ = false;
-  int k_ = 0;
-  std::vector<int> support_, column_slot_;
-  std::vector<double> Y_, P_, Pchol_, Pinv_, Jc_, Z_;
-  static constexpr int kMaxLowRank = 24;  // most shared columns for the low-rank form
-  static constexpr int kMaxRigid = 8;     // most rigid free rows for the low-rank solve
-  double gathered_[kMaxLowRank] = {0};    // J_C' f (see GatherForces)
-  double woodbury_[kMaxLowRank * kMaxLowRank] = {0};  // factor of P^-1 + W' R^-1 W
-  std::vector<double> U_;                 // kMaxRigid x rows: (A_SS + R_S)^-1 A_ST
-  std::vector<double> rhs_scratch_;       // per row
 };
 
 }  // namespace tactip

@@ -1,5 +1,7 @@
 #include "sim/friction_plane.h"
 
+#include "sim/pressing_axis.h"
+
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
@@ -8,25 +10,15 @@
 namespace tactip {
 
 namespace {
-constexpr double kAlignedSine = 1e-9;  // |n x axis| below this: the normal lies along the axis already
 constexpr double kCancelled = 1e-12;   // relative size below which a combined Jacobian entry is a cancellation
-constexpr double kMaxTiltCos = 0.5;    // contacts tilted more than 60 deg from the axis are sideways touches, left as they are
 
-void Cross(const double* a, const double* b, double* out) {
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
 double Dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 }  // namespace
 
-FrictionPlane::FrictionPlane(const mjModel* m) : axis_joint_(m->nbody, -1), scratch_(2 * static_cast<size_t>(m->nv)) {
-  if (m->nuser_jnt < 1 || m->opt.cone != mjCONE_ELLIPTIC) return;
-  for (int j = 0; j < m->njnt; ++j) {
-    if (m->jnt_user[j * m->nuser_jnt] != kCompressionJointUser || m->jnt_type[j] != mjJNT_SLIDE) continue;
-    if (axis_joint_[m->jnt_bodyid[j]] < 0) axis_joint_[m->jnt_bodyid[j]] = j;
-    active_ = true;
-  }
+FrictionPlane::FrictionPlane(const mjModel* m)
+    : axis_joint_(CompressionJoints(m)), scratch_(2 * static_cast<size_t>(m->nv)) {
+  if (m->opt.cone != mjCONE_ELLIPTIC) return;
+  for (int j : axis_joint_) active_ = active_ || j >= 0;
 }
 
 void FrictionPlane::CombineRows(const mjModel* m, mjData* d, int r1, int r2, int rn, const double w1[3],
@@ -88,36 +80,19 @@ void FrictionPlane::Apply(const mjModel* m, mjData* d) const {
     const int dim = con.dim;
     const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
     const int jnt = axis_joint_[b1] >= 0 ? axis_joint_[b1] : axis_joint_[b2];
-    if (dim < 3 || jnt < 0 || (sparse && d->efc_J_rownnz[i + 1] != d->efc_J_rownnz[i])) {
-      i += dim - 1;
-      continue;
-    }
-    // New tangents: u1 perpendicular to the axis a in the tangent plane, u2 = n x u1; the
-    // second friction direction is u2 with its component along a taken out, normalized.
-    const double* a = d->xaxis + 3 * jnt;
-    const double* n = con.frame;
+    const bool same_pattern = !sparse || d->efc_J_rownnz[i + 1] == d->efc_J_rownnz[i];
     double u1[3], u2[3];
-    Cross(n, a, u1);
-    const double sine = std::sqrt(Dot(u1, u1));
-    if (sine < kAlignedSine) {
-      i += dim - 1;
-      continue;
-    }
-    if (std::abs(Dot(n, a)) < kMaxTiltCos) {
-      i += dim - 1;
-      continue;
-    }
-    for (double& x : u1) x /= sine;
-    Cross(n, u1, u2);
-    const double* t1 = con.frame + 3;
-    const double* t2 = con.frame + 6;
-    const double p = Dot(u2, a), an = Dot(a, n), q = std::sqrt(1.0 - p * p);
-    const double w1[3] = {Dot(u1, t1), Dot(u1, t2), 0.0};
-    const double w2[3] = {q * Dot(u2, t1), q * Dot(u2, t2), -p * an / q};
-    CombineRows(m, d, i + 1, i + 2, i, w1, w2);
-    for (int k = 0; k < 3; ++k) {
-      con.frame[3 + k] = u1[k];
-      con.frame[6 + k] = (u2[k] - p * a[k]) / q;
+    const double* n = con.frame;
+    if (dim >= 3 && jnt >= 0 && same_pattern &&
+        FrictionDirections(n, con.frame + 3, con.frame + 6, d->xaxis + 3 * jnt, u1, u2)) {
+      // Each new row is its direction's components along (t1, t2, n) times the old rows.
+      const double w1[3] = {Dot(u1, con.frame + 3), Dot(u1, con.frame + 6), Dot(u1, n)};
+      const double w2[3] = {Dot(u2, con.frame + 3), Dot(u2, con.frame + 6), Dot(u2, n)};
+      CombineRows(m, d, i + 1, i + 2, i, w1, w2);
+      for (int k = 0; k < 3; ++k) {
+        con.frame[3 + k] = u1[k];
+        con.frame[6 + k] = u2[k];
+      }
     }
     i += dim - 1;
   }

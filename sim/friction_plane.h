@@ -1,21 +1,11 @@
 #pragma once
 // Contact friction in the plane perpendicular to each pin's pressing axis.
 //
-// A pin's normal dof stands for the skin being pressed in; it moves along a fixed axis
-// (its "compression" joint, user value 1 in the MJCF: see models/skin.h). On a sloped
-// surface a contact's tangent plane is tilted against that axis, so with MuJoCo's own rows
-// every press or release along the axis would be partly tangential: friction would fight
-// the skin's compression, a sticking contact could not compress, and retracting the sensor
-// would look like slip. After MuJoCo builds the constraints (mj_step1) and before it solves
-// them, this turns each such contact's friction directions into the plane perpendicular to
-// the pressing axis: the first tangent is put perpendicular to the axis (in the contact's
-// tangent plane) and the second is the remaining tangent with its component along the axis
-// taken out. Relative motion along the axis is compression, not slip; friction resists
-// relative motion across it. Efc rows (J, J', velocity, reference acceleration) and the
-// contact frame are updated together, so the solver, the friction pass and the contact
-// read-out agree. Contacts whose normal already lies along the axis are left as they are,
-// and so are sideways touches (normal more than 60 degrees from the axis: pressing along
-// the axis does not load them, so motion along it is real sliding).
+// After MuJoCo builds the constraints (mj_step1) and before it solves them, this turns
+// each contact's friction rows into the directions across the pin's pressing axis (see
+// sim/pressing_axis.h). Efc rows (J, J', velocity, reference acceleration) and the contact
+// frame are updated together, so the solver, the friction pass (or MuJoCo's noslip) and the
+// contact read-out agree.
 
 #include <vector>
 
@@ -41,8 +31,5 @@ class FrictionPlane {
   mutable std::vector<double> scratch_;  // 2 x nv: combined row values
   bool active_ = false;
 };
-
-/// The user value that flags a compression joint.
-inline constexpr double kCompressionJointUser = 1.0;
 
 }  // namespace tactip

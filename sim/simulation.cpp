@@ -285,21 +285,16 @@ void Simulation::ReadContacts(const std::vector<int>& slot_of_geom, std::vector<
   const mjModel* m = model_.raw();
   mjData* d = data_.get();
   for (auto& c : out) c = GeomContact{};
-  const int nv = m->nv;
-  bool have_efc_vel = false;
+  have_efc_vel_ = false;
   for (int i = 0; i < d->ncon; ++i) {
     const mjContact& con = d->contact[i];
     if (con.exclude) continue;
     // Which side of the contact is tracked; the normal points from geom1 to geom2.
     int slot = slot_of_geom[con.geom2];
     double sign = 1.0;
-    int other = con.geom1;
-    int self = con.geom2;
     if (slot < 0) {
       slot = slot_of_geom[con.geom1];
       sign = -1.0;
-      other = con.geom2;
-      self = con.geom1;
     }
     if (slot < 0) continue;
     // Contact force in the contact frame (normal, t1, t2) -> world force on the tracked geom.
@@ -314,32 +309,39 @@ void Simulation::ReadContacts(const std::vector<int>& slot_of_geom, std::vector<
       gc.force_world[k] += sign * fw;
       gc.normal_world[k] = sign * con.frame[k];
     }
-    // Tangential relative velocity at the contact point. Elliptic cones: rows 1 and 2
-    // of the contact are the tangent directions, so J * qvel gives it directly.
-    double vt2 = 0.0;
-    if (m->opt.cone == mjCONE_ELLIPTIC && con.dim >= 3) {
-      if (!have_efc_vel) {
-        mj_mulJacVec(m, d, efc_vel_.data(), d->qvel);
-        have_efc_vel = true;
-      }
-      const double v1 = efc_vel_[con.efc_address + 1], v2 = efc_vel_[con.efc_address + 2];
-      vt2 = v1 * v1 + v2 * v2;
-    } else {
-      // Pyramidal cones: difference of the two bodies' point velocities.
-      mj_jac(m, d, jac_a_.data(), nullptr, con.pos, m->geom_bodyid[self]);
-      mj_jac(m, d, jac_b_.data(), nullptr, con.pos, m->geom_bodyid[other]);
-      double v[3] = {0, 0, 0};
-      for (int r = 0; r < 3; ++r) {
-        for (int j = 0; j < nv; ++j) v[r] += (jac_a_[r * nv + j] - jac_b_[r * nv + j]) * d->qvel[j];
-      }
-      const double vn = v[0] * con.frame[0] + v[1] * con.frame[1] + v[2] * con.frame[2];
-      for (int k = 0; k < 3; ++k) {
-        const double t = v[k] - vn * con.frame[k];
-        vt2 += t * t;
-      }
-    }
-    gc.slip_speed_m_s = std::max(gc.slip_speed_m_s, std::sqrt(vt2));
+    gc.slip_speed_m_s = std::max(gc.slip_speed_m_s, SlipSpeed(i));
   }
+}
+
+double Simulation::SlipSpeed(int i) {
+  // Tangential relative velocity at a contact point. Elliptic cones: rows 1 and 2 of the
+  // contact are the tangent directions, so J * qvel gives it directly.
+  const mjModel* m = model_.raw();
+  mjData* d = data_.get();
+  const mjContact& con = d->contact[i];
+  if (m->opt.cone == mjCONE_ELLIPTIC && con.dim >= 3) {
+    if (!have_efc_vel_) {
+      mj_mulJacVec(m, d, efc_vel_.data(), d->qvel);
+      have_efc_vel_ = true;
+    }
+    const double v1 = efc_vel_[con.efc_address + 1], v2 = efc_vel_[con.efc_address + 2];
+    return std::sqrt(v1 * v1 + v2 * v2);
+  }
+  // Otherwise: difference of the two bodies' point velocities, normal part taken out.
+  const int nv = m->nv;
+  mj_jac(m, d, jac_a_.data(), nullptr, con.pos, m->geom_bodyid[con.geom2]);
+  mj_jac(m, d, jac_b_.data(), nullptr, con.pos, m->geom_bodyid[con.geom1]);
+  double v[3] = {0, 0, 0};
+  for (int r = 0; r < 3; ++r) {
+    for (int j = 0; j < nv; ++j) v[r] += (jac_a_[r * nv + j] - jac_b_[r * nv + j]) * d->qvel[j];
+  }
+  const double vn = v[0] * con.frame[0] + v[1] * con.frame[1] + v[2] * con.frame[2];
+  double vt2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double t = v[k] - vn * con.frame[k];
+    vt2 += t * t;
+  }
+  return std::sqrt(vt2);
 }
 
 }  // namespace tactip
