@@ -131,8 +131,7 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
     for (int i = 0; i < N; ++i) {
       const GeomContact& c = contacts[i];
       const auto [fty, ftz] = TangentialYZ(c);
-      samples[i] = {c.in_contact, c.slip_speed_m_s,
-                    c.in_contact ? std::hypot(fty, ftz) / (mu * c.normal_N) : 0.0};
+      samples[i] = {c.in_contact, c.slip_speed_m_s, c.in_contact ? c.cone_use : 0.0};
       if (!c.in_contact) continue;
       s.q_N += std::abs(fty);
       const double spring = mech.k_shear_N_m * s.u_m;
@@ -372,7 +371,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
     for (int i = 0; i < N; ++i) {
       const GeomContact& c = contacts[i];
       const auto [fty, ftz] = TangentialYZ(c);
-      samples[i] = {c.in_contact, c.slip_speed_m_s, c.in_contact ? std::hypot(fty, ftz) / (mu * c.normal_N) : 0.0};
+      samples[i] = {c.in_contact, c.slip_speed_m_s, c.in_contact ? c.cone_use : 0.0};
       q += fty;
       p += c.normal_N;
     }

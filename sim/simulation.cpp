@@ -2,6 +2,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -304,6 +305,10 @@ void Simulation::ReadContacts(const std::vector<int>& slot_of_geom, std::vector<
     GeomContact& gc = out[slot];
     gc.in_contact = true;
     gc.normal_N += f6[0];
+    if (con.dim >= 3 && con.friction[0] > 0.0 && con.friction[1] > 0.0) {
+      const double use = std::hypot(f6[1] / con.friction[0], f6[2] / con.friction[1]) / f6[0];
+      gc.cone_use = std::max(gc.cone_use, use);
+    }
     for (int k = 0; k < 3; ++k) {
       const double fw = f6[0] * con.frame[k] + f6[1] * con.frame[3 + k] + f6[2] * con.frame[6 + k];
       gc.force_world[k] += sign * fw;

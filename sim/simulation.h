@@ -89,6 +89,12 @@ struct GeomContact {
   std::array<double, 3> force_world{};    ///< total contact force on the geom, world frame
   std::array<double, 3> normal_world{};   ///< contact normal pointing into the geom
   double slip_speed_m_s = 0.0;            ///< tangential relative speed at the contact point
+  /// Friction force over its Coulomb limit, in the contact's own friction rows:
+  /// |(f_1 / mu_1, f_2 / mu_2)| / f_n, 1 on the cone (the largest of the geom's contacts).
+  /// The friction rows of a sloped pin lie across its pressing axis (FrictionPlane), not in
+  /// the contact's tangent plane, so the world-frame split of force_world into normal and
+  /// tangential parts puts a sliding contact at |f_t| / (mu f_n) = cos(tilt) < 1.
+  double cone_use = 0.0;
 };
 
 /// One simulation instance: mjData plus the stepping loop. The CompiledModel must

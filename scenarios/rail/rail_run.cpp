@@ -226,9 +226,8 @@ void RailRun::ReadContactsAndLabel() {
     holding_N_ += mu_pin_[i] * gc.normal_N - gc.normal_N * gc.normal_world[2];
     const double fn = Dot(gc.force_world, gc.normal_world);
     for (int k = 0; k < 3; ++k) tangential_[i][k] = gc.force_world[k] - fn * gc.normal_world[k];
-    const double ft = std::sqrt(Dot(tangential_[i], tangential_[i]));
-    const double mu_now = mu_cur_[i];
-    samples_[i] = {gc.in_contact, gc.slip_speed_m_s, gc.in_contact ? ft / (mu_now * gc.normal_N) : 0.0};
+    // On the cone as the friction rows hold it (see GeomContact::cone_use).
+    samples_[i] = {gc.in_contact, gc.slip_speed_m_s, gc.in_contact ? gc.cone_use : 0.0};
   }
   labels_ = LabelFrame(samples_, c_.labels, pin_contact_.data(), pin_slip_.data());
   // Gross slip: every contacting pin slides and the object moves along the rail relative
