@@ -60,11 +60,13 @@ def read_csv(path, needed):
 
 
 def number(text):
-    """A CSV cell as float; empty, 'nan' and unparsable cells are NaN."""
+    """A CSV cell as float; empty, 'nan', 'inf' (an event that never came) and unparsable
+    cells are NaN: no value to plot."""
     try:
-        return float(text)
+        value = float(text)
     except (TypeError, ValueError):
         return math.nan
+    return value if math.isfinite(value) else math.nan
 
 
 def flag(text):
@@ -324,7 +326,7 @@ def draw_panel(ax, fig, settings, col, x_col):
 
     place_labels(ax, fig, [(s.x, s.y(col), label(s), s.default or s.reference) for s in shown])
     if missing:
-        ax.text(0.01, 0.01, "no value: " + ", ".join(missing), transform=ax.transAxes, fontsize=7,
+        ax.text(0.01, 0.01, "no value (missed or n/a): " + ", ".join(missing), transform=ax.transAxes, fontsize=7,
                 color="grey", va="bottom")
 
 
