@@ -36,6 +36,12 @@ std::vector<std::string> SkinPreset(const std::string& name) {
   throw InputError("--skin '" + name + "': unknown skin (known: smooth, fingerprint-v1, fingerprint-v2)");
 }
 
+std::vector<std::string> SkinPresetOverrides(const std::string& name) {
+  std::vector<std::string> keys = SkinPreset(name);
+  if (name != "smooth") keys.push_back(fmt::format("sim.timestep_s={}", kShearDofValidatedStepS));
+  return keys;
+}
+
 void ContactConfig::ValidateRules() const {
   if (impedance_min > impedance) {
     FailRule("contact.impedance_min", impedance_min, fmt::format("must be <= contact.impedance = {}", impedance));

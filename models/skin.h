@@ -250,9 +250,17 @@ struct SkinMechanics {
   double NormalDamping(double timestep_s) const;
 };
 
-/// The `--skin NAME` presets: "skin.key=value" overrides for smooth, fingerprint-v1 and
-/// fingerprint-v2 (throws InputError for another name).
+/// The skin keys of the `--skin NAME` presets: "skin.key=value" overrides for smooth,
+/// fingerprint-v1 and fingerprint-v2 (throws InputError for another name).
 std::vector<std::string> SkinPreset(const std::string& name);
+
+/// Largest step at which a skin with per-pin shear DOFs is validated at mu = 1, s (see
+/// ShearDofValidatedTimestep in models/stability.h).
+inline constexpr double kShearDofValidatedStepS = 0.001;
+
+/// What `--skin NAME` sets in a scene's config: SkinPreset and, for a fingerprint skin (per-pin
+/// shear DOFs), its validated step sim.timestep_s = kShearDofValidatedStepS.
+std::vector<std::string> SkinPresetOverrides(const std::string& name);
 
 /// Names used in the MJCF so scenarios can look the parts up.
 struct SkinNames {

@@ -67,6 +67,11 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
   return modes;
 }
 
+double ShearDofValidatedTimestep(const SkinConfig& skin, const ContactConfig& contact) {
+  if (skin.coupling == "shell") return std::numeric_limits<double>::infinity();
+  return kShearDofValidatedStepS / std::max(1.0, contact.friction);
+}
+
 StiffMode RailStiffestMode(const RailSceneSpec& spec) {
   const std::vector<StiffMode> modes = RailModes(spec);
   return *std::min_element(modes.begin(), modes.end(),

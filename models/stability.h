@@ -50,6 +50,16 @@ struct StableTimestep {
 /// found never changes the physics. `spec.sim.timestep_s` is ignored.
 StableTimestep LargestStableTimestep(const RailSceneSpec& spec);
 
+/// Largest step at which a skin with per-pin shear DOFs (skin.coupling = membrane or none:
+/// the fingerprint skins) is validated, s; infinity for the shell. Not a mode of the
+/// estimate but a measured limit: its light shear DOFs stick and slip against the friction
+/// pass one step at a time, and at 2 ms those events create energy (0.05-0.43 x the stored
+/// elastic energy while held, pins flickering and jumping) that no linear mode predicts; at
+/// 1 ms they stay within run health at mu = 1. A slip event releases a shear load of order
+/// mu N, so above mu = 1 the step shrinks as 1 / mu (contact.friction; at mu = 3, 1 ms
+/// makes a pin bounce, 0.5 ms is healthy) (README, "Stability suite").
+double ShearDofValidatedTimestep(const SkinConfig& skin, const ContactConfig& contact);
+
 /// The contact's touch-down mode.
 StiffMode ContactTouchdownMode(const ContactConfig& contact);
 

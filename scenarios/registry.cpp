@@ -30,7 +30,7 @@ RailScenarioConfig IncipientDefaults() {
   // "Contacts and friction"), which let partial slip spread before the grip fails.
   std::vector<std::string> keys = {"rail.stimulus=acrylic", "external.enabled=true", "rail.retract_speed_mm_s=0.3",
                                    "contact.pin_friction_spread=0.2", "contact.weakening_speed_mm_s=1", "rail.lift_speed_mm_s=5"};
-  for (const auto& k : SkinPreset("fingerprint-v2")) keys.push_back(k);
+  for (const auto& k : SkinPresetOverrides("fingerprint-v2")) keys.push_back(k);
   return LoadConfig<RailScenarioConfig>("", keys);
 }
 

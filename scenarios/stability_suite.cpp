@@ -68,6 +68,8 @@ std::vector<StabilityCase> BuildCases() {
       {"mu-3-mass-5kg", "mu = 3 under a 5 kg object (10 N against 49 N)", "", {"contact.friction=3", "object.mass_kg=5"},
        E::kNotHeld},
       {"v2-mu-3", "fingerprint-v2, mu = 3", "fingerprint-v2", {"contact.friction=3"}, E::kHeld},
+      {"v2-mu-3-auto-dt", "fingerprint-v2, mu = 3, at the step --auto-timestep picks", "fingerprint-v2",
+       {"contact.friction=3"}, E::kHeld, true},
       {"v2-mu-0.05", "fingerprint-v2, mu = 0.05", "fingerprint-v2", {"contact.friction=0.05"}, E::kNotHeld},
       // Fast retraction.
       {"retract-10mm-s", "retraction at 10 mm/s", "", {"rail.retract_speed_mm_s=10"}, E::kHeld},
@@ -162,7 +164,7 @@ ConfigSource StabilityCaseSource(const StabilityCase& c) {
   ConfigSource src;
   src.overrides = StabilityProtocol();
   if (!c.skin.empty()) {
-    const auto preset = SkinPreset(c.skin);
+    const auto preset = SkinPresetOverrides(c.skin);
     src.overrides.insert(src.overrides.end(), preset.begin(), preset.end());
   }
   src.overrides.insert(src.overrides.end(), c.sets.begin(), c.sets.end());

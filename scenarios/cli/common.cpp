@@ -30,7 +30,8 @@ void ConfigArgs::Add(CLI::App* c) {
   c->add_option("--stimulus", stimulus, "Shortcut for --set rail.stimulus=S (flat, acrylic, curved80, curved40, curved20).");
   c->add_option("--skin", skin,
                 "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling and the "
-                "variant's ridge/thickness/pin keys; applied before --set).");
+                "variant's ridge/thickness/pin keys, and for a fingerprint skin its validated step sim.timestep_s = "
+                "0.001; applied before --set).");
 }
 
 void ConfigArgs::AddAutoTimestep(CLI::App* c) {
@@ -55,7 +56,7 @@ ConfigSource ConfigArgs::Source() const {
   ConfigSource src;
   src.auto_timestep = auto_timestep;
   src.yaml_path = config_path;
-  if (!skin.empty()) src.overrides = SkinPreset(skin);
+  if (!skin.empty()) src.overrides = SkinPresetOverrides(skin);
   if (!std::isnan(speed_mm_s)) src.overrides.push_back(fmt::format("rail.retract_speed_mm_s={}", speed_mm_s));
   if (!stimulus.empty()) src.overrides.push_back("rail.stimulus=" + stimulus);
   src.overrides.insert(src.overrides.end(), sets.begin(), sets.end());

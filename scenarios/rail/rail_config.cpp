@@ -63,6 +63,13 @@ void RailScenarioConfig::ValidateRules() const {
                            dt_max, mode.name, mode.omega, mode.zeta, dt_max,
                            mode.other_fix.empty() ? "" : " or " + mode.other_fix));
     }
+    const double validated = ShearDofValidatedTimestep(skin, contact);
+    if (sim.timestep_s > validated * (1.0 + 1e-9)) {
+      FailRule("sim.timestep_s", sim.timestep_s,
+               fmt::format("skin.coupling = {} (per-pin shear DOFs) at contact.friction = {} is validated up to "
+                           "{:.3g} s: at larger steps its slip events create energy; use sim.timestep_s <= {:.3g}",
+                           skin.coupling, contact.friction, validated, validated));
+    }
   }
 }
 
@@ -75,6 +82,7 @@ TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {
   const double frame_s = 1.0 / cfg.sensor.frame_rate_hz;
   const std::pair<double, std::string> bounds[] = {
       {stable.timestep_s, "stability"},
+      {ShearDofValidatedTimestep(cfg.skin, cfg.contact), "the skin's per-pin shear DOFs (validated step)"},
       {cfg.sim.timestep_s, "accuracy (the configured sim.timestep_s)"},
       {0.5 * cfg.contact.timeconst_s, "the contact (contact.timeconst_s / 2)"},
       {frame_s, "one camera frame (sensor.frame_rate_hz)"},

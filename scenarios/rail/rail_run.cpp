@@ -196,6 +196,7 @@ RailRunSummary RailRun::Execute(RunRecord& rec, const std::atomic<bool>* stop) {
     const bool seek_prediction = t >= sched_.retract_start && std::isnan(sum_.predicted_onset_s);
     if (!frame_now && !seek_onset && !seek_prediction && !two_coefficients) continue;
     ReadContactsAndLabel();
+    if (labels_.n_slip > 0) slipped_since_frame_ = true;
     if (two_coefficients) UpdateFriction();
     TrackOnset(t, seek_onset);
     if (seek_prediction) TrackPrediction(t);
@@ -289,10 +290,30 @@ void RailRun::RecordFrame(double t, RunRecord& rec) {
   RecordContacts(t, rec);
 }
 
+namespace {
+
+// Largest image motion per metre of motion of point `p` (sensor frame): the Frobenius norm
+// of the projection's Jacobian, by central differences (it bounds every direction's gain).
+double ImageGain(const PinholeCamera& camera, const std::array<double, 3>& p) {
+  constexpr double h = 1e-5;
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    auto a = p, b = p;
+    a[k] += h;
+    b[k] -= h;
+    const auto ua = camera.Project(a), ub = camera.Project(b);
+    sum += (ua[0] - ub[0]) * (ua[0] - ub[0]) + (ua[1] - ub[1]) * (ua[1] - ub[1]);
+  }
+  return std::sqrt(sum) / (2.0 * h);
+}
+
+}  // namespace
+
 void RailRun::RecordPins(RunRecord& rec) {
   // Pin inner ends in the sensor frame, and their image positions. A fingerprint ridge
   // rocks under its tangential contact force (quasi-statically, deflection f_t / k_rock at
   // the contact point), which moves the inner marker the other way.
+  image_gain_px_m_ = 0.0;
   for (int i = 0; i < n_; ++i) {
     auto p = ToSensorFrame(sim_->SitePos(im_.pin_site[i]), origin_, rot_);
     if (im_.marker_rock_m_N > 0.0) {
@@ -300,6 +321,7 @@ void RailRun::RecordPins(RunRecord& rec) {
       for (int k = 0; k < 3; ++k) p[k] -= im_.marker_rock_m_N * fs[k];
     }
     for (int k = 0; k < 3; ++k) rec.pos_m.push_back(static_cast<float>(p[k]));
+    image_gain_px_m_ = std::max(image_gain_px_m_, ImageGain(camera_, p));
     const auto uv = camera_.Project(p);
     px_[2 * i] = static_cast<float>(uv[0]);
     px_[2 * i + 1] = static_cast<float>(uv[1]);
@@ -393,7 +415,14 @@ void RailRun::TrackHealth(double t) {
   const bool held = t >= sched_.lift_end && std::isnan(sum_.gross_slip_onset_s);
   const bool retracting = t >= sched_.retract_start;
   const double creep = retracting ? sim_->BodyPos(im_.slider_body)[2] - sim_->SitePos(im_.pin_outer_site[0])[2] : kNaN;
-  health_.Frame(held, retracting, clean_px_.data(), pin_contact_.data(), labels_.n_slip > 0, creep);
+  // While held the sensor moves only along its normal (the retraction): a pin pushed
+  // quasi-statically moves at most that far, which the image shows at most gain-fold.
+  const double x = sched_.X(t);
+  const double quasi_static_px = std::isnan(prev_frame_x_) ? 0.0 : image_gain_px_m_ * std::abs(x - prev_frame_x_);
+  prev_frame_x_ = x;
+  // Slip between frames counts too (contacts are read at every step while it matters).
+  health_.Frame(held, retracting, clean_px_.data(), pin_contact_.data(), slipped_since_frame_, creep, quasi_static_px);
+  slipped_since_frame_ = false;
 }
 
 void RailRun::Finish(RunRecord& rec) {

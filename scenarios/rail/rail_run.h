@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <limits>
 #include <vector>
 
 #include "models/rail_rig.h"
@@ -101,6 +102,9 @@ class RailRun {
   // Per frame: image positions and detections.
   std::vector<float> px_, prev_px_, ext_px_, prev_ext_px_;
   std::vector<float> clean_px_;  // this frame's pin image positions before camera noise
+  double image_gain_px_m_ = 0.0; // this frame's largest image motion per metre of pin motion
+  bool slipped_since_frame_ = false;  // some pin slipped at a step since the last frame
+  double prev_frame_x_ = std::numeric_limits<double>::quiet_NaN();  // the arm's commanded normal position at the last frame
   std::vector<std::uint8_t> valid_, ext_valid_;
   std::array<double, 3> origin_{};
   std::array<double, 9> rot_{};

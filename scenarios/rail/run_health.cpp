@@ -17,7 +17,7 @@ RunHealthMonitor::RunHealthMonitor(int n_pins, const HealthConfig& cfg)
       creep_ref_m_(std::numeric_limits<double>::quiet_NaN()) {}
 
 void RunHealthMonitor::Frame(bool held, bool retracting, const float* clean_px, const std::uint8_t* pin_contact,
-                             bool any_slip, double creep_m) {
+                             bool any_slip, double creep_m, double quasi_static_px) {
   if (!held) {
     have_prev_ = false;
     return;
@@ -29,7 +29,7 @@ void RunHealthMonitor::Frame(bool held, bool retracting, const float* clean_px, 
       transitions_[i] += pin_contact[i] != prev_contact_[i] ? 1 : 0;
       if (slipped_) continue;
       const double du = clean_px[2 * i] - prev_px_[2 * i], dv = clean_px[2 * i + 1] - prev_px_[2 * i + 1];
-      pin_speed_px_ = std::max(pin_speed_px_, std::hypot(du, dv));
+      pin_speed_px_ = std::max(pin_speed_px_, std::hypot(du, dv) - quasi_static_px);
     }
   }
   std::copy(clean_px, clean_px + 2 * n_, prev_px_.begin());
@@ -67,7 +67,8 @@ RunHealth RunHealthMonitor::Result() const {
                                                      "(health.max_flicker = {})",
                                                      h.flicker_pin, h.flicker_max, cfg_.max_flicker));
   flag(h.pin_speed_px > cfg_.max_pin_speed_px,
-       fmt::format("pins moved {:.3g} px/frame while held with nothing slipping (health.max_pin_speed_px = {})",
+       fmt::format("pins moved {:.3g} px/frame more than the sensor's motion explains while held with nothing "
+                   "slipping (health.max_pin_speed_px = {})",
                    h.pin_speed_px, cfg_.max_pin_speed_px));
   flag(h.stick_creep_um > cfg_.max_stick_creep_um,
        fmt::format("the object crept {:.3g} um on the sticking contact (health.max_stick_creep_um = {})",

@@ -48,6 +48,24 @@ TEST(RunHealthMonitorTest, CountsTransitionsSpeedAndCreepWhileHeld) {
   EXPECT_NE(h.reason.find("crept 30 um"), std::string::npos) << h.reason;
 }
 
+TEST(RunHealthMonitorTest, PinMotionTheSensorsOwnMotionExplainsIsNotCounted) {
+  HealthConfig cfg;
+  RunHealthMonitor m(1, cfg);
+  std::vector<float> px = {0, 0};
+  std::vector<std::uint8_t> contact = {1};
+  m.Frame(true, true, px.data(), contact.data(), false, 0.0);
+  // The retraction explains up to 1.5 px this frame: a 1.6 px move is 0.1 px beyond it.
+  px[0] = 1.6f;
+  m.Frame(true, true, px.data(), contact.data(), false, 0.0, 1.5);
+  EXPECT_NEAR(m.Result().pin_speed_px, 0.1, 1e-6);
+  EXPECT_TRUE(m.Result().ok) << m.Result().reason;
+  // The same move with the sensor still is 1.6 px of unexplained motion.
+  px[0] = 3.2f;
+  m.Frame(true, true, px.data(), contact.data(), false, 0.0, 0.0);
+  EXPECT_NEAR(m.Result().pin_speed_px, 1.6, 1e-6);
+  EXPECT_NE(m.Result().reason.find("more than the sensor's motion explains"), std::string::npos);
+}
+
 TEST(RunHealthMonitorTest, EnergyCreatedIsJudgedAgainstTheStoredEnergy) {
   HealthConfig cfg;
   RunHealthMonitor m(1, cfg);
@@ -55,7 +73,7 @@ TEST(RunHealthMonitorTest, EnergyCreatedIsJudgedAgainstTheStoredEnergy) {
   m.Step(1e-3, 2.0);
   EXPECT_NEAR(m.Result().energy_gain, 5e-4, 1e-12);
   EXPECT_TRUE(m.Result().ok);
-  m.Step(2e-3, 2.0);
+  m.Step(0.04, 2.0);  // 0.0205 x the stored energy: over health.max_energy_gain = 0.02
   EXPECT_FALSE(m.Result().ok);
   EXPECT_NE(m.Result().reason.find("health.max_energy_gain"), std::string::npos);
 }

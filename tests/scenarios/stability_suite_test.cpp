@@ -1,12 +1,14 @@
 // The stability suite and the automatic timestep: every refusal of the suite with its message
 // (through the library and the command line, exit code 2), the case table, one healthy and
 // one refused case through `tactip stability --case`, the empty contact, and the step that
-// --auto-timestep picks (stable, refused 10 % above, smaller for a stiff skin). The whole
-// suite takes ~40 s on 2 cores but exits 1 while the fingerprint-skin and fast-retraction
-// cases are unhealthy (README, "Stability suite"), so only representative cases run here.
+// --auto-timestep picks (stable, refused 10 % above, smaller for a stiff skin, the validated
+// step of the shear-DOF skins), and the whole suite through the command (~40 s on 2 cores):
+// exit 0, every case healthy or refused clearly.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
@@ -40,6 +42,14 @@ const Refusal kRefusals[] = {
     {"dt-5ms",
      {"sim.timestep_s = 0.005: unstable: exceeds the limit 0.00255 s of the skin's pin normal mode",
       "use sim.timestep_s <= 0.00255"}},
+    {"v2-mu-3",
+     {"sim.timestep_s = 0.001: skin.coupling = membrane (per-pin shear DOFs) at contact.friction = 3 is validated up to "
+      "0.000333 s",
+      "use sim.timestep_s <= 0.000333"}},
+    {"v2-dt-5ms",
+     {"sim.timestep_s = 0.005: skin.coupling = membrane (per-pin shear DOFs) at contact.friction = 1 is validated up to "
+      "0.001 s",
+      "use sim.timestep_s <= 0.001"}},
     {"depth-7.5mm", {"rail.press_depth_mm = 7.5: must be <= 7"}},
     {"depth-7mm-jitter",
      {"rail.press_depth_jitter_mm = 0.5: the deepest press, rail.press_depth_mm + jitter = 7.5 mm, is beyond the 7 mm "
@@ -169,6 +179,25 @@ TEST(AutoTimestepTest, MembraneSkinKeepsItsPhysicalDamping) {
   EXPECT_GT(m.TipDamping(1.1 * t.bound_s), m.tip_damping_Ns_m) << "just above, the damping would be raised";
 }
 
+TEST(AutoTimestepTest, ShearDofSkinsGetTheirValidatedStepAndAreRefusedAboveIt) {
+  // The fingerprint presets carry their validated 1 ms step; a higher friction shrinks it.
+  RailScenarioConfig c = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v1"));
+  EXPECT_DOUBLE_EQ(c.sim.timestep_s, 0.001);
+  EXPECT_DOUBLE_EQ(ShearDofValidatedTimestep(c.skin, c.contact), 0.001);
+  c.contact.friction = 2.0;
+  const TimestepChoice t = ChooseTimestep(c);
+  EXPECT_NE(t.binding.find("shear DOFs"), std::string::npos) << t.binding;
+  EXPECT_DOUBLE_EQ(t.timestep_s, 0.0005);
+  EXPECT_THROW(c.ValidateRules(), InputError) << "1 ms at mu = 2";
+  c.sim.timestep_s = t.timestep_s;
+  EXPECT_NO_THROW(c.ValidateRules());
+  // The shell has no such limit; mu below 1 does not raise the step.
+  RailScenarioConfig smooth;
+  EXPECT_TRUE(std::isinf(ShearDofValidatedTimestep(smooth.skin, smooth.contact)));
+  c.contact.friction = 0.1;
+  EXPECT_DOUBLE_EQ(ShearDofValidatedTimestep(c.skin, c.contact), 0.001);
+}
+
 // --- the command line ---------------------------------------------------------------------
 
 class StabilityCliTest : public ::testing::Test {
@@ -196,6 +225,15 @@ TEST_F(StabilityCliTest, OneHealthyAndOneRefusedCaseWithTheirOutcomes) {
   EXPECT_NE(csv.find("\nsmooth-flat,rail,--skin smooth rail.stimulus=flat,any,healthy,0.002,1,"), std::string::npos)
       << csv;
   EXPECT_NE(csv.find("\ngel-x100,rail,skin.gel_modulus_kpa=10000,any,refused,-,"), std::string::npos) << csv;
+}
+
+TEST_F(StabilityCliTest, WholeSuiteIsHealthyOrRefusedClearly) {
+  const CliResult r = Run("stability --quiet --out " + (dir_ / "out").string());
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  const std::string summary = fmt::format("{} case(s): ", StabilityCases().size());
+  EXPECT_NE(r.out.find(summary), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" refused, 0 FAILED"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("FAILED "), std::string::npos) << r.out;
 }
 
 TEST_F(StabilityCliTest, ListNamesEveryCaseAndAnUnknownCaseIsExitCode2) {
