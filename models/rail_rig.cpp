@@ -88,38 +88,49 @@ mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, con
   return root;
 }
 
-BuiltScene BuildRailScene(const RailSceneSpec& spec) {
-  const PinLattice lattice = PinLattice::Build(spec.skin);
-  const std::vector<bool> collidable = RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m);
-  SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s);
-  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
+std::vector<bool> RailOuterSitePins(const RailSceneSpec& spec, size_t n_pins) {
+  std::vector<bool> out(n_pins, spec.external_markers || spec.options.outer_sites);
+  if (!out.empty()) out[0] = true;  // the centre pin's contact point: the creep measurement
+  return out;
+}
 
-  mjcf::Element root = SceneRoot("tactip_rail", spec.sim, spec.contact, -9.81, skin.n_collidable);
+namespace {
 
-  mjcf::Element& world = root.Add("worldbody");
-  world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
-
-  // Rail: a visual beam, the slider on one vertical slide joint, the stimulus on it.
-  const double travel = RailLayout::kRailTravel;
-  world.Add("geom")
-      .Set("name", "rail_beam")
-      .Set("type", "box")
-      .Set("pos", V3(0.045, 0, RailLayout::kAxisHeight + 0.5 * travel))
-      .Set("size", V3(0.01, 0.01, 0.5 * travel + 0.05))
-      .SetInt("contype", 0)
-      .SetInt("conaffinity", 0)
-      .Set("rgba", std::vector<double>{0.4, 0.4, 0.45, 1});
-  mjcf::Element& slider = world.Add("body");
-  slider.Set("name", RailNames::kSlider).Set("pos", V3(0, 0, RailLayout::kAxisHeight));
-  slider.Add("joint")
-      .Set("name", RailNames::kSlide)
-      .Set("type", "slide")
+// The object's joint: the rail's vertical slide joint, or (SceneOptions::object_free_joint)
+// a free joint held in place by heavy damping.
+void AddObjectJoint(mjcf::Element& slider, const RailSceneSpec& spec) {
+  mjcf::Element& joint = slider.Add("joint");
+  joint.Set("name", RailNames::kSlide);
+  if (spec.options.object_free_joint) {
+    joint.Set("type", "free").Set("damping", SceneOptions::kFreeObjectDampingNs_m);
+    return;
+  }
+  joint.Set("type", "slide")
       .Set("axis", V3(0, 0, 1))
       .Set("limited", "true")
-      .Set("range", std::vector<double>{0.0, travel})
+      .Set("range", std::vector<double>{0.0, RailLayout::kRailTravel})
       .Set("solreflimit", std::vector<double>{0.005, 1.0})
       .Set("frictionloss", spec.rail.friction_N)
       .Set("damping", spec.rail.damping_Ns_m);
+}
+
+// Rail: (a visual beam,) the slider on its joint, the stimulus on it.
+void AddRailAndObject(mjcf::Element& world, const RailSceneSpec& spec) {
+  const bool visual = spec.options.visual_geoms;
+  const double travel = RailLayout::kRailTravel;
+  if (visual) {
+    world.Add("geom")
+        .Set("name", "rail_beam")
+        .Set("type", "box")
+        .Set("pos", V3(0.045, 0, RailLayout::kAxisHeight + 0.5 * travel))
+        .Set("size", V3(0.01, 0.01, 0.5 * travel + 0.05))
+        .SetInt("contype", 0)
+        .SetInt("conaffinity", 0)
+        .Set("rgba", std::vector<double>{0.4, 0.4, 0.45, 1});
+  }
+  mjcf::Element& slider = world.Add("body");
+  slider.Set("name", RailNames::kSlider).Set("pos", V3(0, 0, RailLayout::kAxisHeight));
+  AddObjectJoint(slider, spec);
   slider.Add("inertial").Set("pos", V3(0.01, 0, 0)).Set("mass", spec.object.mass_kg)
       .Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
   const std::vector<double> friction{spec.contact.friction, 0.005, 0.0001};
@@ -137,20 +148,22 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
     // Flat: a 50 x 50 x 10 mm plate whose face is the plane x = 0 (clear for acrylic).
     stim.Set("type", "box").Set("pos", V3(0.005, 0, 0)).Set("size", V3(0.005, 0.025, 0.025));
     if (spec.rail.stimulus == "acrylic") stim.Set("rgba", std::vector<double>{0.8, 0.9, 1.0, 0.3});
-  } else {
-    // Curved: a sphere cap of radius Rc, apex at x = 0, on a visual base plate.
-    stim.Set("type", "sphere").Set("pos", V3(Rc, 0, 0)).Set("size", std::vector<double>{Rc});
-    slider.Add("geom")
-        .Set("name", "stimulus_plate")
-        .Set("type", "box")
-        .Set("pos", V3(RailLayout::kApexHeight + 0.003, 0, 0))
-        .Set("size", V3(0.003, 0.03, 0.03))
-        .SetInt("contype", 0)
-        .SetInt("conaffinity", 0);
+    return;
   }
+  // Curved: a sphere cap of radius Rc, apex at x = 0 (on a visual base plate).
+  stim.Set("type", "sphere").Set("pos", V3(Rc, 0, 0)).Set("size", std::vector<double>{Rc});
+  if (!visual) return;
+  slider.Add("geom")
+      .Set("name", "stimulus_plate")
+      .Set("type", "box")
+      .Set("pos", V3(RailLayout::kApexHeight + 0.003, 0, 0))
+      .Set("size", V3(0.003, 0.03, 0.03))
+      .SetInt("contype", 0)
+      .SetInt("conaffinity", 0);
+}
 
-  // Arm: x stage (normal), z stage (vertical), sensor mount, skin.
-  const double m_sensor = SensorMassKg(mech, lattice.size());
+// Arm: x stage (normal), z stage (vertical), sensor mount (with a visual housing), skin.
+void AddArmAndSensor(mjcf::Element& world, const RailSceneSpec& spec, double m_sensor, mjcf::Element skin_body) {
   const double mx = 2.0 * spec.arm.stage_mass_kg + m_sensor;
   const double mz = spec.arm.stage_mass_kg + m_sensor;
   const double x0 = SensorCentreX(spec.skin, spec.rail.approach_gap_mm * 1e-3);
@@ -167,16 +180,35 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   mjcf::Element& sensor = az.Add("body");
   sensor.Set("name", RailNames::kSensor);
   sensor.Add("inertial").Set("pos", V3(-0.02, 0, 0)).Set("mass", kSensorMassKg).Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
-  sensor.Add("geom")
-      .Set("name", "sensor_housing")
-      .Set("type", "cylinder")
-      .Set("pos", V3(-0.03, 0, 0))
-      .Set("zaxis", V3(1, 0, 0))
-      .Set("size", std::vector<double>{spec.skin.OuterRadiusMm() * 1e-3 + 0.003, 0.028})
-      .SetInt("contype", 0)
-      .SetInt("conaffinity", 0)
-      .Set("rgba", std::vector<double>{0.15, 0.15, 0.15, 1});
-  sensor.Append(std::move(skin.body));
+  if (spec.options.visual_geoms) {
+    sensor.Add("geom")
+        .Set("name", "sensor_housing")
+        .Set("type", "cylinder")
+        .Set("pos", V3(-0.03, 0, 0))
+        .Set("zaxis", V3(1, 0, 0))
+        .Set("size", std::vector<double>{spec.skin.OuterRadiusMm() * 1e-3 + 0.003, 0.028})
+        .SetInt("contype", 0)
+        .SetInt("conaffinity", 0)
+        .Set("rgba", std::vector<double>{0.15, 0.15, 0.15, 1});
+  }
+  sensor.Append(std::move(skin_body));
+}
+
+}  // namespace
+
+BuiltScene BuildRailScene(const RailSceneSpec& spec) {
+  const PinLattice lattice = PinLattice::Build(spec.skin);
+  std::vector<bool> collidable = RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m);
+  if (spec.options.all_pins_collide) collidable.assign(lattice.size(), true);
+  SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s,
+                            RailOuterSitePins(spec, lattice.size()));
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
+
+  mjcf::Element root = SceneRoot("tactip_rail", spec.sim, spec.contact, -9.81, skin.n_collidable);
+  mjcf::Element& world = root.Add("worldbody");
+  if (spec.options.visual_geoms) world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
+  AddRailAndObject(world, spec);
+  AddArmAndSensor(world, spec, SensorMassKg(mech, lattice.size()), std::move(skin.body));
 
   // Passive skin coupling and the arm servos.
   if (!skin.tendons.empty()) {

@@ -131,6 +131,27 @@ std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& l
 mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
                         double gravity_z, int n_collidable);
 
+/// Parts the rail scene leaves out because no run needs them. Every field false is the lean
+/// scene all scenarios simulate; each field set puts one part back, so `tactip bench --lean`
+/// can measure what leaving it out saves. None of them is a config key.
+struct SceneOptions {
+  /// A contact geom on every pin, also on pins that cannot reach the stimulus (in a membrane
+  /// lattice those pins then get their normal DOF back too).
+  bool all_pins_collide = false;
+  /// The purely visual parts: rail beam, sensor housing, the curved stimuli's base plate, light.
+  bool visual_geoms = false;
+  /// Every pin's outer contact-point site, also without the external camera (without it the
+  /// scene has the centre pin's only, which the creep measurement reads).
+  bool outer_sites = false;
+  /// The object on a free joint instead of the rail's slide joint. A free object has no rail
+  /// to hold it against the press, so it is held in place by heavy viscous damping on all six
+  /// DOFs (kFreeObjectDampingNs_m) instead of the rail's friction, damping and end stop:
+  /// the skin slides over it during the lift. Not the rail protocol's physics; for measuring
+  /// the cost of a step only.
+  bool object_free_joint = false;
+  static constexpr double kFreeObjectDampingNs_m = 1e4;
+};
+
 /// Everything a rail scene is built from.
 struct RailSceneSpec {
   SimConfig sim;
@@ -139,8 +160,14 @@ struct RailSceneSpec {
   RailConfig rail;
   SkinConfig skin;
   ArmConfig arm;
-  double max_depth_m = 0.0;  ///< deepest press any run will make (for contact culling)
+  double max_depth_m = 0.0;       ///< deepest press any run will make (for contact culling)
+  bool external_markers = false;  ///< the external camera records every pin's outer contact point
+  SceneOptions options;           ///< parts put back that the runs do not need (default: none)
 };
+
+/// Which pins carry an outer contact-point site: all with the external camera (or
+/// options.outer_sites), else the centre pin only.
+std::vector<bool> RailOuterSitePins(const RailSceneSpec& spec, size_t n_pins);
 
 /// Moving mass carried by the arm's z stage: sensor housing plus skin (kg).
 double SensorMassKg(const SkinMechanics& mech, size_t n_pins);
@@ -152,7 +179,8 @@ struct BuiltScene {
   int n_collidable = 0;
 };
 
-/// Assembles the rail scene: world, rail + slider + stimulus, arm + sensor + skin.
+/// Assembles the rail scene: world, rail + slider + stimulus, arm + sensor + skin; only
+/// what spec.options puts back beyond what the runs need.
 BuiltScene BuildRailScene(const RailSceneSpec& spec);
 
 /// Initial arm x offset: the dome centre's world x when the apex is `gap_m` from the

@@ -298,6 +298,11 @@ std::string SkinNames::PinOuterSite(int i) { return fmt::format("pin{}_outer", i
 
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
                    const std::vector<bool>& collidable, double timestep_s) {
+  return BuildSkin(skin, contact, lattice, collidable, timestep_s, std::vector<bool>(lattice.size(), true));
+}
+
+SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
+                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site) {
   const SkinMechanics mech = SkinMechanics::From(skin, lattice);
   const double R = skin.radius_mm * 1e-3;
   const double R_out = skin.OuterRadiusMm() * 1e-3;
@@ -390,8 +395,10 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     const double inner = r_marker - rb;
     b.Add("site").Set("name", SkinNames::PinSite(i)).Set("pos", std::vector<double>{inner * nrm[0], inner * nrm[1], inner * nrm[2]})
         .Set("size", std::vector<double>{0.0005});
-    b.Add("site").Set("name", SkinNames::PinOuterSite(i)).Set("pos", std::vector<double>{rc * nrm[0], rc * nrm[1], rc * nrm[2]})
-        .Set("size", std::vector<double>{0.0003});
+    if (outer_site[i]) {
+      b.Add("site").Set("name", SkinNames::PinOuterSite(i)).Set("pos", std::vector<double>{rc * nrm[0], rc * nrm[1], rc * nrm[2]})
+          .Set("size", std::vector<double>{0.0003});
+    }
   }
   // A spring between two DOFs (or from one DOF to the anchored skin) as a fixed tendon.
   auto spring = [&](const std::string& name, const std::string& j0, bool m0, const std::string& j1, bool m1,

@@ -288,6 +288,11 @@ struct SkinPart {
 /// contype 0 / conaffinity 2, so they touch only geoms with contype 2.
 /// `timestep_s` sets the floor of the membrane lattice's shear damping (its stiffest
 /// shear mode must stay stable under explicit integration of the tendon springs).
+/// Every pin carries a site at its inner end (the marker the internal camera sees) and,
+/// where `outer_site[i]`, one at its outer contact point (external markers); the overload
+/// without `outer_site` gives every pin both.
+SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
+                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site);
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
                    const std::vector<bool>& collidable, double timestep_s);
 

@@ -27,10 +27,20 @@ double SpeedRow::ncon_mean() const {
 namespace {
 
 SpeedRow MeasureScene(const SpeedScene& scene, const std::vector<std::string>& overrides, std::uint64_t seed) {
+  const RailScenario scenario(LoadSpeedScene(scene, overrides));
+  return MeasureRailRun(scene, scenario, seed);
+}
+
+}  // namespace
+
+RailScenarioConfig LoadSpeedScene(const SpeedScene& scene, const std::vector<std::string>& overrides) {
   ConfigSource src;
   src.overrides = scene.overrides;
   src.overrides.insert(src.overrides.end(), overrides.begin(), overrides.end());
-  const RailScenario scenario(FindScenario(scene.scenario).load(src));
+  return FindScenario(scene.scenario).load(src);
+}
+
+SpeedRow MeasureRailRun(const SpeedScene& scene, const RailScenario& scenario, std::uint64_t seed) {
   RunRecord rec;
   RunInstrumentation inst;
   const RailRunSummary s = scenario.RunInstrumented(0, seed, rec, inst);
@@ -44,8 +54,6 @@ SpeedRow MeasureScene(const SpeedScene& scene, const std::vector<std::string>& o
   row.memory_bytes = SceneMemoryBytes(scenario.model());
   return row;
 }
-
-}  // namespace
 
 std::vector<SpeedScene> ChooseSpeedScenes(const std::vector<std::string>& names) {
   const std::vector<SpeedScene> all = SpeedScenes();

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/rail.h"
 #include "sim/step_profile.h"
 
 namespace tactip {
@@ -48,6 +49,15 @@ struct SpeedRow {
 
 /// The scenes named (empty: all), in that order. Throws InputError for an unknown name.
 std::vector<SpeedScene> ChooseSpeedScenes(const std::vector<std::string>& names);
+
+/// The config of a speed scene: its scenario's defaults, the scene's overrides, then
+/// `overrides`. Throws InputError.
+RailScenarioConfig LoadSpeedScene(const SpeedScene& scene, const std::vector<std::string>& overrides);
+
+/// Measures run 0 of `scenario` (seed `seed`) on this thread: every step timed, the same
+/// controls replayed with bare mj_step, nv and memory. MuJoCo's own stage timers need
+/// EnableMujocoTimers() first. `scene` names the row.
+SpeedRow MeasureRailRun(const SpeedScene& scene, const RailScenario& scenario, std::uint64_t seed);
 
 /// Measures every scene in `names` (empty: all) with `overrides` applied on top;
 /// single-threaded, one run each. Throws InputError for an unknown scene name.

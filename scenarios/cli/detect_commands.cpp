@@ -17,6 +17,7 @@
 #include "detectors/svm.h"
 #include "detectors/threshold.h"
 #include "scenarios/bench.h"
+#include "scenarios/cli/lean_command.h"
 #include "scenarios/slip_data.h"
 #include "scenarios/speed.h"
 #include "sim/files.h"
@@ -146,7 +147,8 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     int bench_runs = 40, jobs = 0;
     double speed = std::nan("");
     unsigned long long bench_seed = 2026;
-    bool speed_study = false;
+    bool speed_study = false, lean_study = false;
+    int repeats = 1;
     std::vector<std::string> speed_scenes;
   };
   auto s = std::make_shared<State>();
@@ -208,11 +210,19 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
   bench->add_option("--jobs", s->jobs, "Generation threads (default: all cores).");
   bench->add_option("--config", s->config, "YAML rail config for the generated dataset.")->check(CLI::ExistingFile);
   bench->add_option("--set", s->sets, "Override a rail config key (repeatable).")->type_name("KEY=VALUE");
-  bench->add_flag("--speed", s->speed_study,
+  auto* speed = bench->add_flag("--speed", s->speed_study,
                   "Instead of the slip benchmark: the speed study (real-time factor of each scene, the cost split of "
                   "a step, the scenario's overhead over its physics and bare mj_step on the same model); "
                   "single-threaded, one run per scene. With --out, also DIR/speed.csv.");
-  bench->add_option("--scene", s->speed_scenes, "With --speed: measure only this scene (repeatable).");
+  bench->add_flag("--lean", s->lean_study,
+                  "Instead of the slip benchmark: the lean-scene study (the rail scene as simulated, and with each part "
+                  "it leaves out put back: time per step, constraint rows, contacts, memory); single-threaded, one run "
+                  "per variant (rail flat and rail curved40 unless --scene). With --out, also DIR/lean.csv.")
+      ->excludes(speed);
+  bench->add_option("--scene", s->speed_scenes,
+                    "With --speed or --lean: measure only this scene (repeatable; the speed study's scene names).");
+  bench->add_option("--repeats", s->repeats, "With --lean: rounds over the variants, each keeping its fastest run (default 1).")
+      ->check(CLI::Range(1, 100));
   s->train.Add(bench, false);
 
   return [s, train, eval, detect, bench, stop]() -> int {
@@ -274,6 +284,15 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
       std::fprintf(stderr, "wrote %s: %zu frames of %zu run(s) through %s\n", s->out.c_str(), frames, data.size(),
                    det->name().c_str());
       return 0;
+    }
+    if (*bench && s->lean_study) {
+      LeanOptions o;
+      o.overrides = s->sets;
+      o.seed = s->bench_seed;
+      o.repeats = s->repeats;
+      o.stop = stop;
+      const bool write = bench->get_option("--out")->count() > 0;
+      return RunLeanStudy(s->speed_scenes, o, write ? s->bench_out : std::string());
     }
     if (*bench && s->speed_study) {
       const bool write = bench->get_option("--out")->count() > 0;

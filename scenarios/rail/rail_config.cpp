@@ -112,6 +112,7 @@ RailSceneSpec RailScenarioConfig::SceneSpec() const {
   spec.skin = skin;
   spec.arm = arm;
   spec.max_depth_m = (rail.press_depth_mm + rail.press_depth_jitter_mm) * 1e-3;
+  spec.external_markers = external.enabled;
   return spec;
 }
 

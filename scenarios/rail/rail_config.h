@@ -40,7 +40,8 @@ struct RailScenarioConfig {
   }
   /// Cross-field rules, including the timestep stability limit of the built model.
   void ValidateRules() const;
-  /// The scene spec for this config (deepest press includes the depth jitter).
+  /// The scene spec for this config (deepest press includes the depth jitter): the lean
+  /// scene, with every pin's outer contact point only for the external camera.
   RailSceneSpec SceneSpec() const;
 };
 

@@ -40,9 +40,11 @@ CameraConfig ExternalNoise(const ExternalCameraConfig& e) {
 
 }  // namespace
 
-RailSceneIds::RailSceneIds(const RailScenarioConfig& cfg) {
+RailSceneIds::RailSceneIds(const RailScenarioConfig& cfg, const SceneOptions& options) {
   // Build and compile once; runs copy the model.
-  scene = BuildRailScene(cfg.SceneSpec());
+  RailSceneSpec spec = cfg.SceneSpec();
+  spec.options = options;
+  scene = BuildRailScene(spec);
   model.emplace(CompiledModel::FromXml(scene.xml));
   const CompiledModel& m = *model;
   servo_x = m.ActuatorId(RailNames::kServoX);
@@ -50,7 +52,8 @@ RailSceneIds::RailSceneIds(const RailScenarioConfig& cfg) {
   sensor_body = m.BodyId(RailNames::kSensor);
   slider_body = m.BodyId(RailNames::kSlider);
   stimulus_geom = m.GeomId(RailNames::kStimulus);
-  slide_dof = m.JointDofAdr(m.JointId(RailNames::kSlide));
+  // The object's vertical DOF: the slide joint, or a free joint's third (z translation).
+  slide_dof = m.JointDofAdr(m.JointId(RailNames::kSlide)) + (options.object_free_joint ? 2 : 0);
   arm_z_dof = m.JointDofAdr(m.JointId(RailNames::kArmZ));
   slot_of_geom.assign(m.ngeom(), -1);
   const SkinMechanics mech = SkinMechanics::From(cfg.skin, PinLattice::Build(cfg.skin));
@@ -58,9 +61,10 @@ RailSceneIds::RailSceneIds(const RailScenarioConfig& cfg) {
     marker_rock_m_N = mech.marker_rock_factor / mech.k_rock_N_m;
   }
   apex_x_m = cfg.skin.OuterRadiusMm() * 1e-3;
+  const std::vector<bool> outer = RailOuterSitePins(spec, static_cast<size_t>(scene.n_pins));
   for (int i = 0; i < scene.n_pins; ++i) {
     pin_site.push_back(m.SiteId(SkinNames::PinSite(i)));
-    pin_outer_site.push_back(m.SiteId(SkinNames::PinOuterSite(i)));
+    pin_outer_site.push_back(outer[i] ? m.SiteId(SkinNames::PinOuterSite(i)) : -1);
     int g = -1;
     try {
       g = m.GeomId(SkinNames::PinGeom(i));

@@ -29,13 +29,14 @@ struct RailSceneIds {
   std::optional<CompiledModel> model;
   int servo_x = -1, servo_z = -1, sensor_body = -1, slider_body = -1, stimulus_geom = -1;
   int slide_dof = -1, arm_z_dof = -1;
-  std::vector<int> pin_site, pin_outer_site, pin_geom;  ///< per pin; pin_geom -1: no contact geom
+  std::vector<int> pin_site, pin_outer_site, pin_geom;  ///< per pin; -1: no outer site / no contact geom
   std::vector<int> slot_of_geom;                         ///< geom id -> pin index (or -1)
   double marker_rock_m_N = 0.0;  ///< inner marker moves by -this * tangential contact force (ridge pivot)
   double apex_x_m = 0.0;         ///< dome apex in the sensor frame
 
-  /// Compiles the scene of `cfg` and looks its elements up; throws ModelError.
-  explicit RailSceneIds(const RailScenarioConfig& cfg);
+  /// Compiles the scene of `cfg` (with the parts `options` puts back) and looks its elements
+  /// up; throws ModelError.
+  RailSceneIds(const RailScenarioConfig& cfg, const SceneOptions& options);
 };
 
 /// The state of one run. Construct, then Execute() once.

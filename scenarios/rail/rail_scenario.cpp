@@ -4,9 +4,11 @@
 
 namespace tactip {
 
-RailScenario::RailScenario(const RailScenarioConfig& cfg) : cfg_(cfg) {
+RailScenario::RailScenario(const RailScenarioConfig& cfg) : RailScenario(cfg, SceneOptions{}) {}
+
+RailScenario::RailScenario(const RailScenarioConfig& cfg, const SceneOptions& options) : cfg_(cfg) {
   ValidateConfig(cfg_);
-  ids_ = std::make_unique<RailSceneIds>(cfg_);
+  ids_ = std::make_unique<RailSceneIds>(cfg_, options);
 }
 
 RailScenario::~RailScenario() = default;

@@ -59,6 +59,9 @@ class RailScenario {
  public:
   /// Validates the config and compiles the scene once; throws InputError/ModelError.
   explicit RailScenario(const RailScenarioConfig& cfg);
+  /// The same with parts of the scene put back that the runs do not need (for measuring
+  /// what leaving them out saves; see SceneOptions).
+  RailScenario(const RailScenarioConfig& cfg, const SceneOptions& options);
   ~RailScenario();
 
   /// Simulates run `index` with its seed derived from `seed`; fills `record` and

@@ -373,6 +373,7 @@ TEST(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithAFullShearLatticeA
     RailSceneSpec spec;
     spec.skin = PresetSkin(name);
     spec.rail.stimulus = "acrylic";
+    spec.external_markers = true;  // the incipient rig records every outer contact point
     spec.max_depth_m = 3.1e-3;
     const BuiltScene scene = BuildRailScene(spec);
     EXPECT_EQ(scene.n_pins, std::string(name) == "fingerprint-v1" ? 91 : 127);

@@ -1,0 +1,31 @@
+#include "scenarios/cli/lean_command.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "sim/files.h"
+
+namespace tactip::cli {
+
+int RunLeanStudy(const std::vector<std::string>& scenes, const LeanOptions& options, const std::string& out_dir) {
+  const std::vector<SpeedScene> chosen = ChooseLeanScenes(scenes);  // an unknown scene is named before anything runs
+  const std::string path = out_dir.empty() ? std::string() : (std::filesystem::path(out_dir) / "lean.csv").string();
+  if (!path.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    CheckWritableLocation(path);
+  }
+  std::fprintf(stderr, "bench --lean: %zu scene(s) x %zu variants, one core, every step timed\n", chosen.size(),
+               LeanVariants().size());
+  LeanOptions o = options;
+  o.progress = [](const std::string& line) { std::fprintf(stderr, "bench --lean: %s\n", line.c_str()); };
+  const std::vector<LeanRow> rows = MeasureLean(chosen, o);
+  std::printf("%s", FormatLeanTable(rows).c_str());
+  if (!path.empty()) {
+    WriteFileAtomic(path, LeanCsv(rows));
+    std::fprintf(stderr, "wrote %s\n", path.c_str());
+  }
+  return 0;
+}
+
+}  // namespace tactip::cli
