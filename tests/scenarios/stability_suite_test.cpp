@@ -168,7 +168,7 @@ TEST(AutoTimestepTest, ContactTimeConstantAndFrameBoundTheStep) {
 TEST(AutoTimestepTest, MembraneSkinKeepsItsPhysicalDamping) {
   // fingerprint-v2: its stiff shear mode sets the step at which the model need not raise
   // the lattice's damping.
-  RailScenarioConfig c = LoadConfig<RailScenarioConfig>("", SkinPreset("fingerprint-v2"));
+  RailScenarioConfig c = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2"));
   const TimestepChoice t = ChooseTimestep(c);
   EXPECT_EQ(t.binding, "stability");
   EXPECT_NE(t.stable_mode.find("membrane lattice's shear mode"), std::string::npos) << t.stable_mode;

@@ -41,7 +41,7 @@ TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
 // gross slip at Q = mu P; the stick region shrinks from the outside in).
 TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
   DomeCheckOptions o;
-  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPreset("fingerprint-v2")).skin;
+  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
   ASSERT_EQ(o.rig.skin.pattern, "fingerprint-v2");
   o.rig.sim.timestep_s = 0.001;
   const DomeCheck c = RunDomeCheck(o);
@@ -87,7 +87,7 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
 // ring before Cattaneo-Mindlin does, a weakly coupled one stays between CM and the brush.
 TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {
   DomeCheckOptions o;
-  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPreset("fingerprint-v2")).skin;
+  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
   o.rig.sim.timestep_s = 0.001;
   o.shear_speed_mm_s = 0.3;
   o.rig.skin.thickness_mm = 0.3;
