@@ -106,22 +106,19 @@ std::vector<AccuracySetting> Selected(const std::vector<AccuracySetting>& all, c
   return out;
 }
 
-AccuracyReport RunRailAccuracy(const AccuracyOptions& o) {
-  const ScenarioEntry& entry = FindScenario(o.scene);
-  const std::vector<AccuracySetting> settings = Selected(RailAccuracySettings(), o.only);
-  // Every setting's config is checked before anything runs, except those the stability
-  // check refuses (reported as such).
-  entry.load(WithSetting(o.base, settings.front()));
+// Measures every setting in turn with `measure` (a row per setting, progress after each). A
+// setting refused (InputError) or failed (SimulationError) becomes a row saying so, except the
+// reference, which every other row is compared with.
+template <class Measure>
+AccuracyReport MeasureSettings(const std::string& scene, const std::vector<AccuracySetting>& settings,
+                               const AccuracyOptions& o, Measure measure) {
   AccuracyReport report;
-  report.scene = o.scene;
-  RailSettingRuns ref;
+  report.scene = scene;
   for (size_t i = 0; i < settings.size(); ++i) {
     const AccuracySetting& s = settings[i];
     AccuracyRow row;
     try {
-      RailSettingRuns runs = RunRailSetting(entry, o, s);
-      if (s.is_reference) ref = runs;
-      row = RailRow(s, runs, ref);
+      row = measure(s);
     } catch (const InputError& e) {
       if (s.is_reference) throw;
       row = NotRun(s, std::string("refused: ") + e.what());
@@ -133,6 +130,20 @@ AccuracyReport RunRailAccuracy(const AccuracyOptions& o) {
     if (o.progress) o.progress(static_cast<int>(i + 1), static_cast<int>(settings.size()), row);
   }
   return report;
+}
+
+AccuracyReport RunRailAccuracy(const AccuracyOptions& o) {
+  const ScenarioEntry& entry = FindScenario(o.scene);
+  const std::vector<AccuracySetting> settings = Selected(RailAccuracySettings(), o.only);
+  // Every setting's config is checked before anything runs, except those the stability
+  // check refuses (reported as such).
+  entry.load(WithSetting(o.base, settings.front()));
+  RailSettingRuns ref;
+  return MeasureSettings(o.scene, settings, o, [&](const AccuracySetting& s) {
+    RailSettingRuns runs = RunRailSetting(entry, o, s);
+    if (s.is_reference) ref = runs;
+    return RailRow(s, runs, ref);
+  });
 }
 
 // The dome checks of `validate contact` at one setting: the continuum-regime (0.3 mm) and
@@ -179,29 +190,14 @@ AccuracyRow DomeRow(const AccuracySetting& s, const std::vector<DomeCheck>& dome
 
 AccuracyReport RunDomeAccuracy(const AccuracyOptions& o) {
   const std::vector<AccuracySetting> settings = Selected(DomeAccuracySettings(), o.only);
-  AccuracyReport report;
-  report.scene = "domes";
   std::vector<DomeCheck> ref;
-  for (size_t i = 0; i < settings.size(); ++i) {
+  return MeasureSettings("domes", settings, o, [&](const AccuracySetting& s) {
     if (o.stop && o.stop->load()) throw Interrupted();
-    const AccuracySetting& s = settings[i];
-    AccuracyRow row;
-    try {
-      double wall = 0.0;
-      const std::vector<DomeCheck> domes = RunDomes(o, s, &wall);
-      if (s.is_reference) ref = domes;
-      row = DomeRow(s, domes, wall, ref);
-    } catch (const InputError& e) {
-      if (s.is_reference) throw;
-      row = NotRun(s, std::string("refused: ") + e.what());
-    } catch (const SimulationError& e) {
-      if (s.is_reference) throw;
-      row = NotRun(s, std::string("failed: ") + e.what());
-    }
-    report.rows.push_back(row);
-    if (o.progress) o.progress(static_cast<int>(i + 1), static_cast<int>(settings.size()), row);
-  }
-  return report;
+    double wall = 0.0;
+    const std::vector<DomeCheck> domes = RunDomes(o, s, &wall);
+    if (s.is_reference) ref = domes;
+    return DomeRow(s, domes, wall, ref);
+  });
 }
 
 }  // namespace
