@@ -1,19 +1,37 @@
 #include "scenarios/accuracy/settings.h"
 
+#include <fmt/format.h>
+
 #include "sim/config.h"
 
 namespace tactip {
 
-std::vector<AccuracySetting> RailAccuracySettings() {
-  // The reference: a quarter of the default step, converged solver and friction pass.
-  const std::vector<std::string> fine = {"sim.timestep_s=0.0005", "sim.iterations=100", "sim.tolerance=1e-12",
-                                         "sim.noslip_iterations=30"};
+namespace {
+
+std::string StepLabel(double step_s) { return fmt::format("dt={:g}ms", 1e3 * step_s); }
+
+std::string StepOverride(double step_s) { return fmt::format("sim.timestep_s={:g}", step_s); }
+
+// A timestep setting; MuJoCo needs the contact time constant to be at least two steps, so a
+// longer step lengthens it to that.
+AccuracySetting StepSetting(double step_s, double timeconst_s) {
+  AccuracySetting s{StepLabel(step_s), {StepOverride(step_s)}, false, false};
+  if (timeconst_s < 2.0 * step_s) s.overrides.push_back(fmt::format("contact.timeconst_s={:g}", 2.0 * step_s));
+  return s;
+}
+
+}  // namespace
+
+std::vector<AccuracySetting> RailAccuracySettings(double default_step_s, double timeconst_s) {
+  // The reference: a quarter of the scene's default step, converged solver and friction pass.
+  const std::vector<std::string> fine = {StepOverride(default_step_s / 4.0), "sim.iterations=100",
+                                         "sim.tolerance=1e-12", "sim.noslip_iterations=30"};
   return {
       {"reference", fine, true, false},
       {"default", {}, false, true},
-      {"dt=1ms", {"sim.timestep_s=0.001"}, false, false},
-      {"dt=1.5ms", {"sim.timestep_s=0.0015"}, false, false},
-      {"dt=2.5ms", {"sim.timestep_s=0.0025", "contact.timeconst_s=0.005"}, false, false},
+      StepSetting(default_step_s / 2.0, timeconst_s),
+      StepSetting(0.75 * default_step_s, timeconst_s),
+      StepSetting(1.25 * default_step_s, timeconst_s),
       {"iterations=5", {"sim.iterations=5"}, false, false},
       {"tolerance=1e-6", {"sim.tolerance=1e-6"}, false, false},
       {"noslip rounds=1", {"sim.noslip_iterations=1"}, false, false},

@@ -16,8 +16,10 @@ struct AccuracySetting {
   bool is_default = false;             ///< the built-in defaults
 };
 
-/// Settings for the rail and incipient scenes (the reference first).
-std::vector<AccuracySetting> RailAccuracySettings();
+/// Settings for the rail and incipient scenes (the reference first): the timesteps are a
+/// quarter (the reference), half, three quarters and 1.25 times the scene's default step, so a
+/// scene whose skin defaults to a finer step is swept around its own default.
+std::vector<AccuracySetting> RailAccuracySettings(double default_step_s, double timeconst_s);
 
 /// Settings for the dome checks (timestep, solver, noslip, contact softness; reference first).
 std::vector<AccuracySetting> DomeAccuracySettings();

@@ -134,7 +134,7 @@ AccuracyReport MeasureSettings(const std::string& scene, const std::vector<Accur
 
 AccuracyReport RunRailAccuracy(const AccuracyOptions& o) {
   const ScenarioEntry& entry = FindScenario(o.scene);
-  const std::vector<AccuracySetting> settings = Selected(RailAccuracySettings(), o.only);
+  const std::vector<AccuracySetting> settings = Selected(AccuracySettings(o), o.only);
   // Every setting's config is checked before anything runs, except those the stability
   // check refuses (reported as such).
   entry.load(WithSetting(o.base, settings.front()));
@@ -189,7 +189,7 @@ AccuracyRow DomeRow(const AccuracySetting& s, const std::vector<DomeCheck>& dome
 }
 
 AccuracyReport RunDomeAccuracy(const AccuracyOptions& o) {
-  const std::vector<AccuracySetting> settings = Selected(DomeAccuracySettings(), o.only);
+  const std::vector<AccuracySetting> settings = Selected(AccuracySettings(o), o.only);
   std::vector<DomeCheck> ref;
   return MeasureSettings("domes", settings, o, [&](const AccuracySetting& s) {
     if (o.stop && o.stop->load()) throw Interrupted();
@@ -202,13 +202,19 @@ AccuracyReport RunDomeAccuracy(const AccuracyOptions& o) {
 
 }  // namespace
 
+std::vector<AccuracySetting> AccuracySettings(const AccuracyOptions& opts) {
+  if (opts.scene == "domes") return DomeAccuracySettings();
+  if (opts.scene != "rail" && opts.scene != "incipient") {
+    throw InputError("accuracy: unknown scene '" + opts.scene + "' (known: rail, incipient, domes)");
+  }
+  const RailScenarioConfig cfg = FindScenario(opts.scene).load(opts.base);
+  return RailAccuracySettings(cfg.sim.timestep_s, cfg.contact.timeconst_s);
+}
+
 void CheckAccuracyOptions(const AccuracyOptions& opts) {
   if (opts.runs < 1) throw InputError(fmt::format("--runs = {}: must be >= 1", opts.runs));
   const bool domes = opts.scene == "domes";
-  if (!domes && opts.scene != "rail" && opts.scene != "incipient") {
-    throw InputError("accuracy: unknown scene '" + opts.scene + "' (known: rail, incipient, domes)");
-  }
-  const std::vector<AccuracySetting> settings = Selected(domes ? DomeAccuracySettings() : RailAccuracySettings(), opts.only);
+  const std::vector<AccuracySetting> settings = Selected(AccuracySettings(opts), opts.only);
   if (!domes) FindScenario(opts.scene).load(WithSetting(opts.base, settings.front()));
 }
 

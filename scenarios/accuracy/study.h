@@ -54,6 +54,10 @@ struct AccuracyReport {
   std::vector<AccuracyRow> rows;   ///< reference first
 };
 
+/// The settings the study of `opts.scene` sweeps (the reference first), for the scene's
+/// config: the rail-protocol scenes' timesteps are relative to the configured step.
+std::vector<AccuracySetting> AccuracySettings(const AccuracyOptions& opts);
+
 /// Throws InputError naming the problem when the scene, a setting or the reference's config
 /// is bad (RunAccuracy checks this too; callers use it before printing anything).
 void CheckAccuracyOptions(const AccuracyOptions& opts);

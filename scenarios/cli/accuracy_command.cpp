@@ -25,8 +25,8 @@ struct AccuracyArgs {
 };
 
 // --list: the settings of the scene, with their overrides.
-int ListSettings(const std::string& scene) {
-  for (const auto& s : scene == "domes" ? DomeAccuracySettings() : RailAccuracySettings()) {
+int ListSettings(const AccuracyOptions& o) {
+  for (const auto& s : AccuracySettings(o)) {
     std::string o;
     for (const auto& k : s.overrides) o += (o.empty() ? "" : " ") + k;
     std::printf("%-20s %s%s\n", s.label.c_str(), o.empty() ? "(built-in defaults)" : o.c_str(),
@@ -53,10 +53,10 @@ void WriteOutputs(const AccuracyReport& report, const AccuracyArgs& a) {
 
 int RunAccuracyCommand(const AccuracyArgs& a, const std::atomic<bool>* stop) {
   const std::string scene = a.config.scenario;
-  if (a.list) return ListSettings(scene);
   AccuracyOptions o;
   o.scene = scene;
   o.base = a.config.Source();
+  if (a.list) return ListSettings(o);
   o.runs = a.runs;
   o.seed = a.seed;
   o.jobs = a.jobs;
