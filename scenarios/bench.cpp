@@ -152,6 +152,18 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   return r;
 }
 
+std::vector<std::string> BenchOutputFiles(const BenchOptions& opts) {
+  std::vector<std::string> files = {"bench.json", "bench.csv", "threshold.model", "logreg.model"};
+  if (opts.dataset.empty()) files.push_back("bench-rail.h5");
+  for (const std::string base : {"svm-linear", "svm-rbf"}) {
+    files.push_back(base + ".model");
+    for (FeatureSet f : {FeatureSet::kDrDtheta, FeatureSet::kDr, FeatureSet::kDtheta}) {
+      if (f != opts.train.features) files.push_back(base + "-" + ToString(f) + ".model");
+    }
+  }
+  return files;
+}
+
 std::string FormatBenchTable(const BenchResult& r) {
   std::string out = fmt::format("dataset {} | train runs {}-{} ({} frames, {} slip) | test runs {}-{}\n",
                                 r.dataset_path, r.train_runs.front(), r.train_runs.back(), r.train_rows,

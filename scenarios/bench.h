@@ -57,6 +57,10 @@ struct BenchResult {
 /// Runs the benchmark and writes DIR/bench.json, DIR/bench.csv and the models.
 BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts);
 
+/// The names of the files RunBench writes into opts.out_dir: bench.json, bench.csv, one
+/// model per trained detector and, when it generates the dataset, bench-rail.h5.
+std::vector<std::string> BenchOutputFiles(const BenchOptions& opts);
+
 /// The table printed by `tactip bench` and `tactip evaluate`.
 std::string FormatBenchTable(const BenchResult& r);
 /// One-detector metrics table (for `tactip evaluate`).

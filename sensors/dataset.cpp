@@ -381,11 +381,11 @@ DatasetWriter::DatasetWriter(const std::string& path, const DatasetHeader& heade
   const int fd = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) {
     const int why = errno;
-    if (why == ENOENT) {
-      const std::string folder = fs::path(path).parent_path().string();
-      throw InputError(im.err + "folder '" + (folder.empty() ? "." : folder) + "' does not exist");
-    }
-    throw InputError(im.err + std::strerror(why));
+    const std::string parent = fs::path(path).parent_path().string();
+    const std::string folder = parent.empty() ? "." : parent;
+    // ENOENT also comes from folders that exist but take no new files (such as /proc).
+    if (why == ENOENT && !fs::is_directory(folder, ec)) throw InputError(im.err + "folder '" + folder + "' does not exist");
+    throw InputError(im.err + "cannot create a file in folder '" + folder + "' (" + std::strerror(why) + ")");
   }
   ::close(fd);
   im.created = true;

@@ -8,6 +8,8 @@
 
 #include "scenarios/accuracy/study.h"
 #include "scenarios/cli/common.h"
+#include "scenarios/cli/option_checks.h"
+#include "scenarios/cli/output_checks.h"
 #include "scenarios/plot.h"
 #include "sim/files.h"
 
@@ -64,7 +66,12 @@ int RunAccuracyCommand(const AccuracyArgs& a, const std::atomic<bool>* stop) {
   o.stop = stop;
   // Everything that can be wrong is found before the first run: the scene, the settings,
   // the config, the output folder and the plotting tool.
+  if (!a.out.empty()) {
+    CheckOutputsAreNotInputs(FilesInFolder("--out", a.out, {"accuracy.csv", "accuracy.png"}),
+                             {{"--config", a.config.config_path}});
+  }
   CheckAccuracyOptions(o);
+  NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(a.out, ec);
@@ -81,6 +88,7 @@ int RunAccuracyCommand(const AccuracyArgs& a, const std::atomic<bool>* stop) {
   const AccuracyReport report = RunAccuracy(o);
   std::printf("%s", FormatAccuracyTable(report).c_str());
   if (!a.out.empty()) WriteOutputs(report, a);
+  folder.Keep();
   return 0;
 }
 
@@ -97,10 +105,12 @@ std::function<int()> AddAccuracyCommand(CLI::App& app, const std::atomic<bool>* 
                                          "contact').");
   c->add_option("--runs", a->runs, "Runs per setting, the same seeds for every setting (default 2).")
       ->check(CLI::Range(1, 1000));
-  c->add_option("--seed", a->seed, "Master seed (default 1).");
+  AddSeedOption(c, a->seed, "Master seed (default 1).");
   c->add_option("--jobs", a->jobs, "Worker threads (default: all cores).")->check(CLI::Range(0, 256));
-  c->add_option("--out", a->out, "Folder for accuracy.csv and accuracy.png (created if missing).");
-  c->add_option("--setting", a->settings, "Run only this setting (repeatable; the reference always runs); see --list.");
+  c->add_option("--out", a->out, "Folder for accuracy.csv and accuracy.png (created if missing).")
+      ->check(NonEmpty("a folder"));
+  c->add_option("--setting", a->settings, "Run only this setting (repeatable; the reference always runs); see --list.")
+      ->check(NonEmpty("a setting name (see --list)"));
   c->add_flag("--list", a->list, "List the scene's settings and exit.");
   c->add_flag("--no-plots", a->no_plots, "With --out: write the CSV only.");
   c->add_flag("--quiet", a->quiet, "No per-setting progress lines.");

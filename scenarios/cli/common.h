@@ -29,8 +29,9 @@ struct ConfigArgs {
   std::string skin;                ///< --skin preset
   bool auto_timestep = false;      ///< --auto-timestep
 
-  /// Registers the options on `c` (the scenario as a required positional).
-  void Add(CLI::App* c);
+  /// Registers the options on `c`, with the scenario as a required positional unless
+  /// `with_scenario` is false.
+  void Add(CLI::App* c, bool with_scenario = true);
   /// Registers --auto-timestep on `c`.
   void AddAutoTimestep(CLI::App* c);
   /// The config source: file, skin preset, shortcuts, then --set in order.

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "scenarios/cli/common.h"
+#include "scenarios/cli/option_checks.h"
+#include "scenarios/cli/output_checks.h"
 #include "scenarios/dataset_merge.h"
 #include "sim/files.h"
 
@@ -55,6 +57,7 @@ int RunConfig(const ScenarioEntry& entry, const ConfigSource& src, const Scenari
 
 // tactip export-mjcf: the scene's MJCF to a file or standard output.
 int RunExport(const ScenarioEntry& entry, const ConfigSource& src, const std::string& out) {
+  CheckOutputsAreNotInputs({{"--out", out}}, {{"--config", src.yaml_path}});
   if (!out.empty()) CheckWritableLocation(out);
   ResolveAndReport(entry, src);
   const std::string xml = entry.export_mjcf(src);
@@ -81,9 +84,10 @@ void PrintRunProgress(int done, int total, int idx, const RailRunSummary& s) {
 // tactip generate: simulate and write the dataset, then print its summary.
 int RunGenerate(const ScenarioEntry& entry, const ConfigSource& src, const ScenarioArgs& a,
                 const std::atomic<bool>* stop) {
-  ResolveAndReport(entry, src);  // validates the config before anything is printed or written
   GenerateOptions opts;
   opts.out_path = a.out.empty() ? entry.name + ".h5" : a.out;
+  CheckOutputsAreNotInputs({{"--out", opts.out_path}}, {{"--config", src.yaml_path}});
+  ResolveAndReport(entry, src);  // validates the config before anything is printed or written
   if (!a.shard.empty()) opts.shard = ParseShardOption(a.shard, a.runs);
   CheckWritableLocation(opts.out_path);
   opts.runs = a.runs;
@@ -133,32 +137,38 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
   a->config.Add(gen);
   a->config.AddAutoTimestep(gen);
   gen->add_option("--runs", a->runs, "Number of runs (default 4).")->check(CLI::Range(1, 100000));
-  gen->add_option("--seed", a->seed, "Master seed; run i derives its own seed from it (default 1).");
-  gen->add_option("--out", a->out, "Output HDF5 file (default SCENARIO.h5); written atomically.");
+  AddSeedOption(gen, a->seed, "Master seed; run i derives its own seed from it (default 1).");
+  gen->add_option("--out", a->out, "Output HDF5 file (default SCENARIO.h5); written atomically.")
+      ->check(NonEmpty("a file name"));
   gen->add_option("--jobs", a->jobs, "Worker threads (default: all cores); results do not depend on it.")
       ->check(CLI::Range(0, 256));
   gen->add_option("--shard", a->shard,
                   "Simulate only shard i of n: runs floor(i*R/n) to floor((i+1)*R/n)-1 of the R = --runs runs, "
                   "bit-identical to the same runs of the whole job; join the shard files with 'tactip merge'.")
-      ->type_name("i/n");
+      ->type_name("i/n")
+      ->check(NonEmpty("i/n, e.g. 0/4"));
   gen->add_flag("--quiet", a->quiet, "No per-run progress lines.");
 
   auto* merge = app.add_subcommand(
       "merge", "Join shard files (generate --shard i/n) into the dataset one machine writes for the whole job.");
   merge->add_option("files", a->merge_inputs, "Shard files, any order; together they must hold every run once.")
-      ->required();
+      ->required()
+      ->check(NonEmpty("a shard file"));
   merge->add_option("--out", a->out, "Output HDF5 file; written atomically; must not be one of the inputs.")
-      ->required();
+      ->required()
+      ->check(NonEmpty("a file name"));
   merge->add_flag("--quiet", a->quiet, "No per-shard progress lines.");
 
   auto* info = app.add_subcommand("info", "Show the runs, frames, slip onsets and config of a dataset.");
-  info->add_option("file", a->info_path, "HDF5 dataset written by 'tactip generate'.")->required();
+  info->add_option("file", a->info_path, "HDF5 dataset written by 'tactip generate'.")
+      ->required()
+      ->check(NonEmpty("an HDF5 dataset"));
   info->add_flag("--no-config", a->no_config, "Do not print the stored config.");
 
   auto* exp = app.add_subcommand("export-mjcf", "Write the exact MuJoCo model (MJCF) a scenario builds.");
   a->config.Add(exp);
   a->config.AddAutoTimestep(exp);
-  exp->add_option("--out", a->out, "Output XML file (default: standard output).");
+  exp->add_option("--out", a->out, "Output XML file (default: standard output).")->check(NonEmpty("a file name"));
 
   auto* cfg = app.add_subcommand("config", "List every config key of a scenario with unit, range and meaning.");
   a->config.Add(cfg);

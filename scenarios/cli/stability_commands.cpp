@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/cli/option_checks.h"
+#include "scenarios/cli/output_checks.h"
 #include "scenarios/stability_suite.h"
+#include "sim/config.h"
 #include "sim/files.h"
 
 namespace tactip::cli {
@@ -34,8 +37,11 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   o.jobs = a.jobs;
   o.stop = stop;
   std::string csv_path;
+  NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
-    std::filesystem::create_directories(a.out);
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw InputError("cannot create output folder '" + a.out + "': " + ec.message());
     csv_path = (std::filesystem::path(a.out) / "stability.csv").string();
     CheckWritableLocation(csv_path);
   }
@@ -53,6 +59,7 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::printf("%s", FormatStabilityTable(results).c_str());
   if (!csv_path.empty()) WriteFileAtomic(csv_path, StabilityCsv(results));
+  folder.Keep();
   bool failed = false;
   for (const auto& r : results) {
     if (r.outcome != CaseOutcome::kFailed) continue;
@@ -74,9 +81,12 @@ std::function<int()> AddStabilityCommands(CLI::App& app, const std::atomic<bool>
       "fast retraction, large steps, tall ridges, deep and empty presses, every stimulus and skin). Each must run "
       "healthy or be refused before it runs with a message naming the parameter and a safe value; exit 1 if any "
       "case fails.");
-  c->add_option("--case", a->cases, "Run only this case (repeatable); --list shows the names.")->type_name("NAME");
+  c->add_option("--case", a->cases, "Run only this case (repeatable); --list shows the names.")
+      ->type_name("NAME")
+      ->check(NonEmpty("a case name (see --list)"));
   c->add_option("--out", a->out, "Also write the table as DIR/stability.csv (the folder is created).")
-      ->type_name("DIR");
+      ->type_name("DIR")
+      ->check(NonEmpty("a folder"));
   c->add_option("--jobs", a->jobs, "Cases run at once (default: all cores).")->check(CLI::Range(0, 256));
   c->add_flag("--list", a->list, "List the cases (name, the outcome Coulomb expects, what each sets) and exit.");
   c->add_flag("--quiet", a->quiet, "No per-case progress lines.");

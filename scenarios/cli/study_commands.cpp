@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "scenarios/cli/common.h"
+#include "scenarios/cli/option_checks.h"
+#include "scenarios/cli/output_checks.h"
 #include "scenarios/incipient_report.h"
 #include "scenarios/sweep.h"
 #include "scenarios/validate.h"
@@ -19,7 +21,7 @@ namespace {
 // Options of the study subcommands (owned by the returned closure).
 struct StudyArgs {
   ConfigArgs config;
-  std::string validate_what;
+  std::vector<std::string> validate_checks;
   std::vector<std::string> sweep_params;
   int sweep_runs = 4, jobs = 0;
   unsigned long long seed = 1;
@@ -89,6 +91,7 @@ int RunValidate(const ConfigArgs& c) {
 
 // tactip report incipient: per-run figures of a dataset, optionally as CSV.
 int RunReport(const StudyArgs& a) {
+  CheckOutputsAreNotInputs({{"--csv", a.report_csv}}, {{"FILE", a.report_path}});
   if (!a.report_csv.empty()) CheckWritableLocation(a.report_csv);
   const DatasetReader reader(a.report_path);
   std::vector<IncipientRunMetrics> metrics;
@@ -122,6 +125,9 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
   o.seed = a.seed;
   o.jobs = a.jobs;
   o.out_dir = a.out.empty() ? "sweep" : a.out;
+  std::vector<std::string> outputs = {"designs.csv", "runs.csv"};
+  for (const auto& m : SweepMetrics()) outputs.push_back(m.name + ".png");
+  CheckOutputsAreNotInputs(FilesInFolder("--out", o.out_dir, outputs), {{"--config", a.config.config_path}});
   o.plots = !a.no_plots;
   o.detector = a.sweep_detector;
   o.stop = stop;
@@ -132,9 +138,11 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
     };
   }
   const auto wall0 = std::chrono::steady_clock::now();
+  NewFolderGuard folder(o.out_dir);
   const auto results = RunSweep(o, [&](int done, int total, const SweepDesignResult& r) {
     if (!a.quiet) PrintDesignProgress(done, total, r);
   });
+  folder.Keep();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   std::fprintf(stderr, "done: %zu designs in %.1f s; wrote %s/designs.csv, runs.csv%s\n", results.size(), wall,
                o.out_dir.c_str(), SweepDrawsHeatmaps(o) ? " and one heatmap per metric (*.png)" : "");
@@ -151,17 +159,18 @@ CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
                 "Swept key: KEY=START:STOP:STEP, KEY=A,B,C or KEY=V (repeatable; first varies slowest; heatmaps "
                 "need 1 or 2).")
       ->required()
-      ->type_name("SPEC");
+      ->type_name("SPEC")
+      ->check(NonEmpty("KEY=START:STOP:STEP, KEY=A,B,C or KEY=V"));
   c->add_option("--runs", a.sweep_runs, "Runs per design; every design uses the same run seeds (default 4).")
       ->check(CLI::Range(1, 100000));
-  c->add_option("--seed", a.seed, "Master seed (default 1); the same seed reproduces the sweep exactly.");
+  AddSeedOption(c, a.seed, "Master seed (default 1); the same seed reproduces the sweep exactly.");
   c->add_option("--jobs", a.jobs, "Worker threads (default: all cores); results do not depend on it.")
       ->check(CLI::Range(0, 256));
-  c->add_option("--out", a.out, "Output folder (default sweep/); created if missing.");
+  c->add_option("--out", a.out, "Output folder (default sweep/); created if missing.")->check(NonEmpty("a folder"));
   c->add_option("--window", a.sweep_detector.window, "Incipient detector window W (default 5).")
       ->check(CLI::Range(1, 1000));
   c->add_option("--speed-thr-px", a.sweep_detector.speed_thr_px, "Incipient detector s_thr (default 0.2).")
-      ->check(CLI::PositiveNumber);
+      ->check(NumberAbove(0.0));
   c->add_option("--count-thr", a.sweep_detector.count_thr, "Incipient detector I_thr (default 4).")
       ->check(CLI::Range(1, 100000));
   c->add_flag("--quiet", a.quiet, "No per-design progress lines.");
@@ -176,15 +185,18 @@ CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
                                "first-slipping pins, internal vs external tracking, and the incipient detector's "
                                "alarms.");
   c->add_option("what", a.report_what, "incipient")->required()->check(CLI::IsMember({"incipient"}));
-  c->add_option("file", a.report_path, "HDF5 dataset written by 'tactip generate'.")->required();
+  c->add_option("file", a.report_path, "HDF5 dataset written by 'tactip generate'.")
+      ->required()
+      ->check(NonEmpty("an HDF5 dataset"));
   c->add_option("--window", a.report_params.window, "Detector moving-average window W (default 5).")
       ->check(CLI::Range(1, 1000));
   c->add_option("--speed-thr-px", a.report_params.speed_thr_px,
                 "Detector excess-speed threshold s_thr, px/frame (default 0.2).")
-      ->check(CLI::PositiveNumber);
+      ->check(NumberAbove(0.0));
   c->add_option("--count-thr", a.report_params.count_thr, "Detector set-size threshold I_thr (default 4).")
       ->check(CLI::Range(1, 100000));
-  c->add_option("--csv", a.report_csv, "Also write the per-run table as CSV.");
+  c->add_option("--csv", a.report_csv, "Also write the per-run table as CSV; not the input FILE.")
+      ->check(NonEmpty("a file name"));
   return c;
 }
 
@@ -194,11 +206,14 @@ std::function<int()> AddStudyCommands(CLI::App& app, const std::atomic<bool>* st
   auto a = std::make_shared<StudyArgs>();
   auto* validate = app.add_subcommand(
       "validate", "Check the simulated contact against analytic anchors and print measured vs predicted.");
-  validate->add_option("what", a->validate_what, "contact: the pin lattice against the brush model.")
+  validate->add_option("what", a->validate_checks, "contact: the pin lattice against the brush model.")
       ->required()
-      ->check(CLI::IsMember({"contact"}));
-  a->config.Add(validate);
-  validate->get_option("scenario")->required(false);
+      ->check(CLI::Validator(
+          [](std::string& check) {
+            return check == "contact" ? std::string() : "unknown check '" + check + "'; the known checks are: contact";
+          },
+          "contact"));
+  a->config.Add(validate, false);
   auto* sweep = AddSweep(app, *a);
   auto* report = AddReport(app, *a);
   return [a, validate, sweep, report, stop]() -> int {

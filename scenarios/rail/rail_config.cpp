@@ -41,7 +41,7 @@ void RailScenarioConfig::ValidateRules() const {
   const double retract_mm = rail.approach_gap_mm + rail.press_depth_mm + rail.press_depth_jitter_mm + 5.0;
   if (retract_mm / rail.retract_speed_mm_s > kMaxRetractS) {
     FailRule("rail.retract_speed_mm_s", rail.retract_speed_mm_s,
-             fmt::format("the retraction would take {:.0f} s of simulated time (limit {:.0f} s); use >= {:.3g}",
+             fmt::format("the retraction would take {:g} s of simulated time (limit {:g} s); use >= {:.3g}",
                          retract_mm / rail.retract_speed_mm_s, kMaxRetractS, retract_mm / kMaxRetractS));
   }
   if (external.enabled && rail.stimulus != "acrylic") {

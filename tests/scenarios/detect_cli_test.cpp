@@ -8,12 +8,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "detectors/pin_csv.h"
 #include "cli_helpers.h"
+#include "scenarios/bench.h"
 #include "scenarios/slip_data.h"
 #include "sim/config.h"
 
@@ -173,6 +175,63 @@ TEST_F(DetectCliTest, BadDetectorInputGetsOneLineAndExitCode2) {
   }
 }
 
+TEST_F(DetectCliTest, OutputThatIsAnInputIsRefusedBeforeAnyWork) {
+  ASSERT_EQ(Run("train threshold --data " + P("d.h5") + " --runs 0-3 --out " + P("o.model")).code, 0);
+  ASSERT_EQ(Run("detect --model " + P("o.model") + " --data " + P("d.h5") + " --runs 4 --out " + P("o.csv")).code, 0);
+  const auto runs = LoadDatasetRuns(P("d.h5"), {4});
+  WritePinCsv(P("in.csv"), runs[0].frames);
+  fs::create_directories(P("ob"));
+  fs::copy_file(P("o.model"), P("ob/threshold.model"));
+  fs::create_symlink(P("d.h5"), P("link.h5"));
+  const std::string data = Slurp(P("d.h5")), model = Slurp(P("o.model")), csv = Slurp(P("in.csv"));
+  struct Case {
+    std::string args, message;
+  } cases[] = {
+      {"train threshold --data " + P("d.h5") + " --out " + P("d.h5"), "--out '" + P("d.h5") + "' is the same file as --data"},
+      {"train svm --data " + P("d.h5") + " --out " + P("link.h5"), "is the same file as --data"},
+      {"report incipient " + P("d.h5") + " --csv " + P("d.h5"), "--csv '" + P("d.h5") + "' is the same file as FILE"},
+      {"detect incipient --data " + P("in.csv") + " --out " + P("in.csv"), "is the same file as --data"},
+      {"detect --model " + P("o.model") + " --data " + P("d.h5") + " --out " + P("o.model"),
+       "--out '" + P("o.model") + "' is the same file as --model"},
+      {"detect --model " + P("o.model") + " --data " + P("d.h5") + " --out " + P("d.h5"), "is the same file as --data"},
+      {"bench --dataset " + P("ob/threshold.model") + " --out " + P("ob"),
+       "--out '" + P("ob/threshold.model") + "' is the same file as --dataset"},
+  };
+  for (const auto& c : cases) {
+    const CliResult r = Run(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
+    EXPECT_EQ(Lines(r.err).size(), 1u) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find("the output would overwrite the input"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(Slurp(P("d.h5")), data);
+  EXPECT_EQ(Slurp(P("o.model")), model);
+  EXPECT_EQ(Slurp(P("in.csv")), csv);
+}
+
+TEST_F(DetectCliTest, FoldsBeyondTheTrainingRunsAreRefused) {
+  const CliResult t = Run("train svm --data " + P("d.h5") + " --runs 0-3 --folds 10 --out " + P("f.model"));
+  EXPECT_EQ(t.code, 2);
+  EXPECT_EQ(t.err, "tactip: --folds 10: more folds than the 4 training run(s) (a fold holds whole runs); use --folds "
+                   "2 to 4\n");
+  // The benchmark trains on the first half: 3 of the 6 runs.
+  const CliResult b = Run("bench --dataset " + P("d.h5") + " --folds 4 --out " + P("fb"));
+  EXPECT_EQ(b.code, 2);
+  EXPECT_NE(b.err.find("--folds 4: more folds than the 3 training run(s)"), std::string::npos) << b.err;
+  EXPECT_FALSE(fs::exists(P("fb")));
+  EXPECT_FALSE(fs::exists(P("f.model")));
+  // Without --folds, fewer runs than the default 4 folds still train (one fold per run).
+  EXPECT_EQ(Run("train logreg --data " + P("d.h5") + " --runs 0-2 --c-grid 1,10 --out " + P("f.model")).code, 0);
+}
+
+TEST_F(DetectCliTest, TrainChecksItsOutputFolderBeforeTraining) {
+  const CliResult r = Run("train svm --data " + P("d.h5") + " --out /proc/m.model");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err.rfind("tactip: cannot write '/proc/m.model': cannot create a file in folder '/proc' (", 0), 0u)
+      << r.err;
+  EXPECT_EQ(r.err.find("training set"), std::string::npos) << "trained first: " << r.err;
+}
+
 TEST_F(DetectCliTest, BenchOnAGivenDatasetIsReproducible) {
   const std::string common = "bench --dataset " + P("d.h5") + " --c-grid 1,10 --gamma-grid 0.25 --folds 2 --out ";
   const CliResult a = Run(common + P("b1"));
@@ -197,6 +256,13 @@ TEST_F(DetectCliTest, BenchOnAGivenDatasetIsReproducible) {
   };
   for (size_t i = 0; i < r1.size(); ++i) EXPECT_EQ(strip_timing(r1[i]), strip_timing(r2[i]));
   EXPECT_EQ(Slurp(P("b1/svm-rbf.model")), Slurp(P("b2/svm-rbf.model")));
+  // The files the same-file check guards are exactly the ones written.
+  BenchOptions o;
+  o.dataset = P("d.h5");
+  std::set<std::string> expected, written;
+  for (const auto& f : BenchOutputFiles(o)) expected.insert(f);
+  for (const auto& e : fs::directory_iterator(P("b1"))) written.insert(e.path().filename().string());
+  EXPECT_EQ(written, expected);
   const std::string json = Slurp(P("b1/bench.json"));
   for (const char* key : {"\"dataset\"", "\"detectors\"", "\"f1\"", "\"precision\"", "\"recall\"", "\"accuracy\"",
                           "\"delay_ms\"", "\"fp_per_min\"", "\"us_per_frame_mean\"", "\"us_per_frame_p99\""}) {

@@ -295,6 +295,12 @@ TEST_F(DatasetTest, MissingFolderThrowsInputErrorAndLeavesNothing) {
   EXPECT_TRUE(Entries().empty());
 }
 
+TEST_F(DatasetTest, FolderThatTakesNoFilesIsNamedWithTheSystemsReason) {
+  // /proc exists but refuses new files (ENOENT, even for root): not a missing folder.
+  const std::string msg = InputErrorOf([] { DatasetWriter w("/proc/x.h5", MakeHeader()); });
+  EXPECT_EQ(msg.rfind("cannot write dataset '/proc/x.h5': cannot create a file in folder '/proc' (", 0), 0u) << msg;
+}
+
 TEST_F(DatasetTest, ReadingAMissingFileThrowsInputError) {
   const std::string path = Path("missing.h5");
   EXPECT_EQ(InputErrorOf([&] { DatasetReader r(path); }), "cannot open dataset '" + path + "': no such file");
