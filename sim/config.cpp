@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -38,6 +40,28 @@ std::string FormatReal(double v) {
   auto res = std::to_chars(buf, buf + sizeof(buf), v);
   return std::string(buf, res.ptr);
 }
+
+namespace {
+
+// `v` to `digits` significant digits, rounded towards -inf (down) or +inf, such that the
+// text parses back to a value on that side of `v`; more digits where rounding alone is
+// not enough.
+std::string FormatRounded(double v, bool down) {
+  if (v == 0.0 || !std::isfinite(v)) return FormatReal(v);
+  for (int digits = 3; digits <= 17; ++digits) {
+    const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(v))));
+    const double r = (down ? std::floor(v * scale) : std::ceil(v * scale)) / scale;
+    const std::string text = fmt::format("{:.{}g}", r, digits);
+    const double back = std::strtod(text.c_str(), nullptr);
+    if (down ? back <= v : back >= v) return text;
+  }
+  return FormatReal(v);
+}
+
+}  // namespace
+
+std::string FormatAtMost(double limit) { return FormatRounded(limit, true); }
+std::string FormatAtLeast(double limit) { return FormatRounded(limit, false); }
 
 std::string Escaped(std::string_view text) {
   std::string out;

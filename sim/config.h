@@ -72,6 +72,11 @@ namespace config_detail {
 
 /// Formats a double so that parsing it back yields the same bits.
 std::string FormatReal(double v);
+/// `limit` to three significant digits, rounded down (FormatAtMost) or up (FormatAtLeast) so
+/// that the printed value, parsed back, still satisfies "<= limit" or ">= limit": the safe
+/// value a refusal suggests is accepted when entered as printed.
+std::string FormatAtMost(double limit);
+std::string FormatAtLeast(double limit);
 /// `text` with control characters escaped (a line break as \n, others as \xNN), so that
 /// a message quoting user input stays on one line.
 std::string Escaped(std::string_view text);

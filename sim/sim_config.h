@@ -15,6 +15,8 @@ inline constexpr const char* kFrictionPassNumeric = "tactip_friction_pass";
 
 /// Integrator and constraint-solver settings (the `sim.` section).
 struct SimConfig {
+  /// Shortest allowed physics step, s.
+  static constexpr double kMinTimestepS = 1e-5;
   double timestep_s = 2e-3;        ///< physics step
   int iterations = 50;             ///< Newton iterations per step
   double tolerance = 1e-10;        ///< solver early-exit tolerance
@@ -30,7 +32,7 @@ struct SimConfig {
     v("timestep_s", timestep_s, "s",
       "Physics step. 2 ms is stable for the default skin (stiffest pin mode omega*dt = 1.93 against a limit "
       "of 2.74) and keeps the slip-onset error within one camera frame of the 0.5 ms reference.",
-      Bounds::Closed(1e-5, 0.01));
+      Bounds::Closed(kMinTimestepS, 0.01));
     v("iterations", iterations, "",
       "Maximum Newton iterations per step (on the rail scene the solver exits after 1 on average: tactip bench "
       "--speed).",

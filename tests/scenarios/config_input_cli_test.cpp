@@ -66,5 +66,46 @@ TEST_F(ConfigInputCliTest, LineBreakInASetValueIsRefusedOnOneLine) {
   ExpectRefused("rail --set \"$(printf 'sim.iterations=5\\nx')\"", "--set 'sim.iterations=5\\nx': holds a line break");
 }
 
+// The value printed after `marker` in `text` (up to the next space or semicolon).
+std::string ValueAfter(const std::string& text, const std::string& marker) {
+  const auto at = text.find(marker);
+  if (at == std::string::npos) return "";
+  const auto begin = at + marker.size();
+  return text.substr(begin, text.find_first_of(" ;\n", begin) - begin);
+}
+
+TEST_F(ConfigInputCliTest, TheSuggestedTimestepIsAcceptedAsPrinted) {
+  const std::string cases[] = {
+      "rail --set contact.timeconst_s=0.0062 --set sim.timestep_s=0.003",  // default skin, limit 2.5487 ms
+      "rail --set skin.gel_modulus_kpa=10000",
+      "rail --set skin.thickness_mm=5",
+      "rail --set skin.pin_mass_g=0.01",
+      "rail --skin fingerprint-v2 --set contact.friction=2.9",  // the shear-DOF skin's validated step
+  };
+  for (const std::string& c : cases) {
+    const CliResult refused = Run("config " + c);
+    EXPECT_EQ(refused.code, 2) << c << "\n" << refused.err;
+    const std::string safe = ValueAfter(refused.err, "use sim.timestep_s <= ");
+    ASSERT_FALSE(safe.empty()) << c << "\n" << refused.err;
+    const CliResult again = Run("config " + c + " --set sim.timestep_s=" + safe);
+    EXPECT_EQ(again.code, 0) << c << " --set sim.timestep_s=" << safe << "\n" << again.err;
+  }
+  // A skin whose stable step lies below the shortest allowed one (4.2 us against 10 us) gets no
+  // step to try, but what to change.
+  const CliResult none =
+      Run("config rail --set skin.skin_modulus_mpa=100 --set skin.thickness_mm=5 --set skin.pin_mass_g=0.01");
+  EXPECT_EQ(none.code, 2) << none.err;
+  EXPECT_NE(none.err.find("no sim.timestep_s >= 1e-05 is stable: use other values of the keys that set it"),
+            std::string::npos)
+      << none.err;
+  EXPECT_EQ(none.err.find("use sim.timestep_s <="), std::string::npos) << none.err;
+}
+
+TEST_F(ConfigInputCliTest, APressBeyondWhatTheSkinToleratesNamesBothKeysAndTheLimit) {
+  ExpectRefused("rail --set rail.press_depth_mm=7 --set rail.press_depth_jitter_mm=2",
+                "rail.press_depth_jitter_mm = 2: the deepest press, rail.press_depth_mm + rail.press_depth_jitter_mm "
+                "= 7 + 2 = 9 mm, is beyond the 7 mm a TacTip tolerates; use rail.press_depth_jitter_mm <= 0");
+}
+
 }  // namespace
 }  // namespace tactip
