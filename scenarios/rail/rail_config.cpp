@@ -77,6 +77,8 @@ void RailScenarioConfig::ValidateRules() const {
   sim.ValidateRules();
   skin.ValidateRules();
   contact.ValidateRules();
+  sensor.ValidateRules();
+  external.ValidateIntrinsics(sensor);
   if (contact.timeconst_s < 2.0 * sim.timestep_s) {
     FailRule("contact.timeconst_s", contact.timeconst_s,
              fmt::format("must be >= 2 * sim.timestep_s = {} s (MuJoCo would silently soften it)",

@@ -101,6 +101,18 @@ TEST_F(ConfigInputCliTest, TheSuggestedTimestepIsAcceptedAsPrinted) {
   EXPECT_EQ(none.err.find("use sim.timestep_s <="), std::string::npos) << none.err;
 }
 
+TEST_F(ConfigInputCliTest, CameraIntrinsicsMustFitTheImage) {
+  ExpectRefused("rail --set sensor.fx_px=1e40", "sensor.fx_px = 1e+40: must be <= 163840");
+  ExpectRefused("rail --set sensor.cx_px=1e308", "sensor.cx_px = 1e+308: must be <= 8192");
+  ExpectRefused("incipient --set external.f_px=1e308", "external.f_px = 1e+308: must be <= 163840");
+  ExpectRefused("rail --set sensor.fx_px=20000",
+                "sensor.fx_px = 20000: must be 0.1 to 20 x sensor.width_px (64 to 12800 px for 640 px");
+  ExpectRefused("rail --set sensor.height_px=200",
+                "sensor.cy_px = 240: must be inside the image, 0 to sensor.height_px = 200 px");
+  ExpectRefused("incipient --set external.cx_px=700",
+                "external.cx_px = 700: must be inside the image, 0 to sensor.width_px = 640 px");
+}
+
 TEST_F(ConfigInputCliTest, APressBeyondWhatTheSkinToleratesNamesBothKeysAndTheLimit) {
   ExpectRefused("rail --set rail.press_depth_mm=7 --set rail.press_depth_jitter_mm=2",
                 "rail.press_depth_jitter_mm = 2: the deepest press, rail.press_depth_mm + rail.press_depth_jitter_mm "
