@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "models/scene_size.h"
 #include "models/stability.h"
 
 namespace tactip {
@@ -14,6 +15,8 @@ namespace {
 
 using config_detail::FormatAtLeast;
 using config_detail::FormatAtMost;
+
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 
 // The press: no deeper than a TacTip tolerates, and towards the stimulus (a negative depth
 // stops short of it: an empty contact); the retraction must end within an hour.
@@ -40,6 +43,37 @@ void CheckPress(const RailConfig& rail) {
              fmt::format("the retraction would take {:.0f} s of simulated time (limit {:.0f} s); use >= {}",
                          retract_mm / rail.retract_speed_mm_s, kMaxRetractS, FormatAtLeast(retract_mm / kMaxRetractS)));
   }
+}
+
+// The scene must fit in the solver memory MuJoCo reserves per run; names the skin's pin
+// count key and the largest value that fits (or the ring spacing that does).
+void CheckSceneSize(const RailScenarioConfig& c) {
+  const SceneSize size = EstimateRailScene(c.SceneSpec());
+  if (size.Fits()) return;
+  const bool fingerprint = c.skin.Fingerprint();
+  const std::string key = fingerprint ? "skin.pins_per_ring" : "skin.rings";
+  const int current = fingerprint ? c.skin.pins_per_ring : c.skin.rings;
+  const std::string what = fmt::format(
+      "the skin has {} pins ({} can touch the stimulus), for which MuJoCo would reserve {:.3g} GiB of solver stack per "
+      "run (limit {:.3g} GiB)",
+      size.n_pins, size.n_collidable, size.stack_bytes / kGiB, kMaxSolverStackBytes / kGiB);
+  RailScenarioConfig trial = c;
+  for (int v = current - 1; v >= 1; --v) {
+    (fingerprint ? trial.skin.pins_per_ring : trial.skin.rings) = v;
+    if (EstimateRailScene(trial.SceneSpec()).Fits()) {
+      FailRule(key, current, fmt::format("{}; use {} <= {}", what, key, v));
+    }
+  }
+  // A fingerprint skin too large even at one pin per ring: wider rings.
+  trial = c;
+  const double first_spacing = std::ceil(2.0 * c.skin.ridge_spacing_mm) / 2.0;
+  for (double s = first_spacing; fingerprint && s <= c.skin.pattern_radius_mm; s += 0.5) {
+    trial.skin.ridge_spacing_mm = s;
+    if (EstimateRailScene(trial.SceneSpec()).Fits()) {
+      FailRule(key, current, fmt::format("{}; use skin.ridge_spacing_mm >= {}", what, s));
+    }
+  }
+  FailRule(key, current, what + "; use a skin with fewer pins");
 }
 
 // The timestep: below the stability limit of every mode and, for a skin with per-pin shear
@@ -94,6 +128,7 @@ void RailScenarioConfig::ValidateRules() const {
     FailRule("sensor.frame_rate_hz", sensor.frame_rate_hz,
              fmt::format("one frame ({} s) is shorter than sim.timestep_s = {} s", frame_dt, sim.timestep_s));
   }
+  CheckSceneSize(*this);
   CheckTimestep(*this);
 }
 

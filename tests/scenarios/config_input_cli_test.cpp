@@ -113,6 +113,18 @@ TEST_F(ConfigInputCliTest, CameraIntrinsicsMustFitTheImage) {
                 "external.cx_px = 700: must be inside the image, 0 to sensor.width_px = 640 px");
 }
 
+TEST_F(ConfigInputCliTest, SkinsThatCannotBeBuiltAreRefusedNamingTheParameter) {
+  ExpectRefused("rail --set skin.rings=0", "skin.rings = 0: must be >= 1");
+  const std::string big = "incipient --set skin.pins_per_ring=24 --set skin.ridge_spacing_mm=1";
+  ExpectRefused(big, "skin.pins_per_ring = 24: the skin has 4105 pins (1873 can touch the stimulus), for which MuJoCo "
+                     "would reserve");
+  const CliResult refused = Run("config " + big);
+  const std::string safe = ValueAfter(refused.err, "use skin.pins_per_ring <= ");
+  ASSERT_FALSE(safe.empty()) << refused.err;
+  EXPECT_EQ(Run("config " + big + " --set skin.pins_per_ring=" + safe).code, 0) << safe;
+  EXPECT_EQ(Run("config " + big + " --set skin.pins_per_ring=" + std::to_string(std::stoi(safe) + 1)).code, 2) << safe;
+}
+
 TEST_F(ConfigInputCliTest, APressBeyondWhatTheSkinToleratesNamesBothKeysAndTheLimit) {
   ExpectRefused("rail --set rail.press_depth_mm=7 --set rail.press_depth_jitter_mm=2",
                 "rail.press_depth_jitter_mm = 2: the deepest press, rail.press_depth_mm + rail.press_depth_jitter_mm "
