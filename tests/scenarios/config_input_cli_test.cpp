@@ -101,6 +101,11 @@ TEST_F(ConfigInputCliTest, TheSuggestedTimestepIsAcceptedAsPrinted) {
   EXPECT_EQ(none.err.find("use sim.timestep_s <="), std::string::npos) << none.err;
 }
 
+TEST_F(ConfigInputCliTest, TooFewSolverIterationsAreRefused) {
+  ExpectRefused("rail --set sim.iterations=2", "sim.iterations = 2: must be >= 20");
+  EXPECT_EQ(Run("config rail --set sim.iterations=20").code, 0);
+}
+
 TEST_F(ConfigInputCliTest, CameraIntrinsicsMustFitTheImage) {
   ExpectRefused("rail --set sensor.fx_px=1e40", "sensor.fx_px = 1e+40: must be <= 163840");
   ExpectRefused("rail --set sensor.cx_px=1e308", "sensor.cx_px = 1e+308: must be <= 8192");
