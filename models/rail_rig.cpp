@@ -50,6 +50,14 @@ double SensorMassKg(const SkinMechanics& mech, size_t n_pins) {
   return kSensorMassKg + mech.shell_mass_kg + static_cast<double>(n_pins) * mech.pin_mass_kg;
 }
 
+ContactBudget SceneContactBudget(const SimConfig& sim, int n_collidable) {
+  ContactBudget b;
+  b.nconmax = n_collidable + 8;
+  const int rows_per_contact = sim.cone == "pyramidal" ? 4 : 3;
+  b.njmax = rows_per_contact * b.nconmax + 16;
+  return b;
+}
+
 mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
                         double gravity_z, int n_collidable) {
   mjcf::Element root("mujoco");
@@ -68,11 +76,8 @@ mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, con
       .SetInt("noslip_iterations", exact_noslip ? 0 : sim.noslip_iterations)
       .Set("noslip_tolerance", sim.noslip_tolerance)
       .Set("gravity", V3(0, 0, gravity_z));
-  // Contact budget: one contact per collidable pin plus spare; constraint rows for
-  // condim-3 contacts (3 elliptic, 4 pyramidal) plus joint limits and dry friction.
-  const int nconmax = n_collidable + 8;
-  const int rows_per_contact = sim.cone == "pyramidal" ? 4 : 3;
-  root.Add("size").SetInt("nconmax", nconmax).SetInt("njmax", rows_per_contact * nconmax + 16).SetInt("nuser_jnt", 1);
+  const ContactBudget budget = SceneContactBudget(sim, n_collidable);
+  root.Add("size").SetInt("nconmax", budget.nconmax).SetInt("njmax", budget.njmax).SetInt("nuser_jnt", 1);
   if (exact_noslip) {
     // tactip's friction pass runs outside MuJoCo (tactip's Simulation reads this numeric);
     // a plain MuJoCo program loading this file runs without it, so its contacts creep.

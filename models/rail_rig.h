@@ -126,8 +126,17 @@ struct RailNames {
 std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
                                      double max_depth_m);
 
-/// A scene root: model name, compiler settings, solver options from `sim`, and a contact
-/// budget for `n_collidable` pin contacts plus spare (rows sized for the cone type).
+/// MuJoCo's contact budget of a scene with `n_collidable` pin contacts: one contact per pin
+/// plus spare, and constraint rows for them (3 per contact with elliptic cones, 4 pyramidal)
+/// plus joint limits and dry friction.
+struct ContactBudget {
+  int nconmax = 0;
+  int njmax = 0;
+};
+ContactBudget SceneContactBudget(const SimConfig& sim, int n_collidable);
+
+/// A scene root: model name, compiler settings, solver options from `sim`, and the contact
+/// budget SceneContactBudget.
 mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
                         double gravity_z, int n_collidable);
 

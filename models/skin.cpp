@@ -33,7 +33,7 @@ std::vector<std::string> SkinPreset(const std::string& name) {
             "skin.ridge_height_mm=2",      "skin.ridge_shape=sine",    "skin.thickness_mm=1",
             "skin.pin_length_mm=1",        "skin.pins_per_ring=6",     "skin.pattern_radius_mm=18"};
   }
-  throw InputError("--skin '" + name + "': unknown skin (known: smooth, fingerprint-v1, fingerprint-v2)");
+  throw InputError("--skin '" + config_detail::Escaped(name) + "': unknown skin (known: smooth, fingerprint-v1, fingerprint-v2)");
 }
 
 std::vector<std::string> SkinPresetOverrides(const std::string& name) {

@@ -40,8 +40,10 @@ struct SkinConfig {
       Bounds::Closed(5.0, 100.0));
     v("pitch_mm", pitch_mm, "mm", "Pin spacing on the hexagonal lattice, measured along the dome (TacTip: 3 mm).",
       Bounds::Closed(0.5, 20.0));
-    v("rings", rings, "", "Hexagonal rings around the centre pin; N = 1 + 3 r (r + 1) pins (6 -> 127).",
-      Bounds::Closed(0, 12));
+    v("rings", rings, "",
+      "Hexagonal rings around the centre pin; N = 1 + 3 r (r + 1) pins (6 -> 127). At least 1: a lone centre pin "
+      "has no skin around it to carry.",
+      Bounds::Closed(1, 12));
     v("thickness_mm", thickness_mm, "mm",
       "Skin thickness. Sets the bending coupling between neighbouring pins, D = E t^3 / (12 (1 - nu^2)).",
       Bounds::Closed(0.1, 5.0));

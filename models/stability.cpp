@@ -62,7 +62,8 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
   arm.name = "the arm servo (set by arm.kp_N_m, arm.stage_mass_kg)";
   modes.push_back(arm);
   StiffMode touch = ContactTouchdownMode(spec.contact);
-  touch.other_fix = fmt::format("contact.impedance_min <= {:.3g}", MaxStableImpedanceMin(spec.contact, spec.sim.timestep_s));
+  touch.other_fix = "contact.impedance_min <= " +
+                   config_detail::FormatAtMost(MaxStableImpedanceMin(spec.contact, spec.sim.timestep_s));
   modes.push_back(touch);
   return modes;
 }

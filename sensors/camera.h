@@ -14,6 +14,9 @@ namespace tactip {
 
 /// Camera intrinsics, placement, rate and noise (the `sensor.` section).
 struct CameraConfig {
+  /// Allowed focal length per pixel of image size: a pinhole field of view of 157 to 2.9 degrees.
+  static constexpr double kMinFocalPerPx = 0.1;
+  static constexpr double kMaxFocalPerPx = 20.0;
   double frame_rate_hz = 100.0;   ///< frames per second
   int width_px = 640;             ///< image width
   int height_px = 480;            ///< image height
@@ -32,11 +35,14 @@ struct CameraConfig {
       Bounds::Closed(1.0, 2000.0));
     v("width_px", width_px, "px", "Image width.", Bounds::Closed(16, 8192));
     v("height_px", height_px, "px", "Image height.", Bounds::Closed(16, 8192));
-    v("fx_px", fx_px, "px", "Horizontal focal length (580 px puts the outer ring ~220 px from the centre).",
-      Bounds::Positive());
-    v("fy_px", fy_px, "px", "Vertical focal length.", Bounds::Positive());
-    v("cx_px", cx_px, "px", "Principal point, horizontal.", Bounds::Any());
-    v("cy_px", cy_px, "px", "Principal point, vertical.", Bounds::Any());
+    v("fx_px", fx_px, "px",
+      "Horizontal focal length (580 px puts the outer ring ~220 px from the centre); 0.1 to 20 x width_px (a "
+      "field of view of 157 to 2.9 degrees).",
+      Bounds::Closed(kMinFocalPerPx * 16, kMaxFocalPerPx * 8192));
+    v("fy_px", fy_px, "px", "Vertical focal length; 0.1 to 20 x height_px.",
+      Bounds::Closed(kMinFocalPerPx * 16, kMaxFocalPerPx * 8192));
+    v("cx_px", cx_px, "px", "Principal point, horizontal; inside the image (0 to width_px).", Bounds::Closed(0, 8192));
+    v("cy_px", cy_px, "px", "Principal point, vertical; inside the image (0 to height_px).", Bounds::Closed(0, 8192));
     v("camera_offset_mm", camera_offset_mm, "mm",
       "Distance of the camera's optical centre behind the dome centre along the sensor axis.",
       Bounds::Closed(1.0, 200.0));
@@ -48,7 +54,8 @@ struct CameraConfig {
       "Probability that a pin is missed in a frame; a missed pin keeps its previous position and valid = 0.",
       Bounds::RightOpen(0.0, 1.0));
   }
-  void ValidateRules() const {}
+  /// Focal lengths and principal point consistent with the image size.
+  void ValidateRules() const;
 };
 
 /// Pinhole camera on the sensor axis looking along +x (the dome's outward axis).
@@ -85,13 +92,21 @@ struct ExternalCameraConfig {
       "Distance of the external camera's optical centre in front of the dome apex, on the sensor axis, looking "
       "back at the skin (its image is mirrored relative to the internal camera's).",
       Bounds::Closed(5.0, 1000.0));
-    v("f_px", f_px, "px", "Focal length of the external camera in pixels.", Bounds::Positive());
-    v("cx_px", cx_px, "px", "Principal point, horizontal.", Bounds::Any());
-    v("cy_px", cy_px, "px", "Principal point, vertical.", Bounds::Any());
+    v("f_px", f_px, "px",
+      "Focal length of the external camera in pixels; its image has the internal camera's size (sensor.width_px x "
+      "sensor.height_px), so 0.1 to 20 x sensor.width_px.",
+      Bounds::Closed(CameraConfig::kMinFocalPerPx * 16, CameraConfig::kMaxFocalPerPx * 8192));
+    v("cx_px", cx_px, "px", "Principal point, horizontal; inside the image (0 to sensor.width_px).",
+      Bounds::Closed(0, 8192));
+    v("cy_px", cy_px, "px", "Principal point, vertical; inside the image (0 to sensor.height_px).",
+      Bounds::Closed(0, 8192));
     v("pixel_noise_px", pixel_noise_px, "px", "Std of Gaussian noise per pixel coordinate of an external marker.",
       Bounds::Closed(0.0, 20.0));
   }
   void ValidateRules() const {}
+  /// Focal length and principal point consistent with the image size of `image` (the
+  /// internal camera's, which the external camera shares).
+  void ValidateIntrinsics(const CameraConfig& image) const;
 };
 
 /// Pinhole projection of the external camera: at sensor x = apex + distance, looking

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -282,6 +283,44 @@ int ParseRunName(const std::string& name) {
   return RunGroupName(index) == name ? index : -1;
 }
 
+/// Index of the first non-finite value of `v`, or -1.
+template <class T>
+long long FirstNonFinite(const std::vector<T>& v) {
+  for (size_t k = 0; k < v.size(); ++k) {
+    if (!std::isfinite(static_cast<double>(v[k]))) return static_cast<long long>(k);
+  }
+  return -1;
+}
+
+/// Throws InputError (prefix `err`) naming the first array of `run` that holds a non-finite
+/// value, with its frame and pin: such a value is no data, and a file must not carry it.
+void CheckFinite(const RunRecord& run, const std::string& err) {
+  struct Array {
+    const char* path;
+    long long bad;
+    size_t per_frame, per_pin;  // values per frame and per pin (0: no pin axis)
+  };
+  const size_t n = static_cast<size_t>(run.n_pins);
+  const Array arrays[] = {
+      {"time", FirstNonFinite(run.time), 1, 0},
+      {"pins/pos_px", FirstNonFinite(run.pos_px), 2 * n, 2},
+      {"pins/pos_m", FirstNonFinite(run.pos_m), 3 * n, 3},
+      {"external/pos_px", FirstNonFinite(run.external_px), 2 * n, 2},
+      {"external/pos_m", FirstNonFinite(run.external_m), 3 * n, 3},
+      {"contact/normal_N", FirstNonFinite(run.normal_N), n, 1},
+      {"contact/tangential_N", FirstNonFinite(run.tangential_N), 2 * n, 2},
+      {"object/height_m", FirstNonFinite(run.object_height_m), 1, 0},
+  };
+  for (const Array& a : arrays) {
+    if (a.bad < 0) continue;
+    const size_t k = static_cast<size_t>(a.bad);
+    std::string where = "frame " + std::to_string(k / a.per_frame);
+    if (a.per_pin > 0) where += ", pin " + std::to_string((k % a.per_frame) / a.per_pin);
+    throw InputError(err + "/runs/" + RunGroupName(run.index) + "/" + a.path + " would hold a non-finite value (" +
+                     where + "); the run is not written");
+  }
+}
+
 /// "(5, 3, 2)".
 std::string ShapeText(const std::vector<hsize_t>& shape) {
   std::string out = "(";
@@ -421,6 +460,7 @@ void DatasetWriter::WriteRun(const RunRecord& run) {
     throw std::logic_error("DatasetWriter::WriteRun called after Commit for '" + path_ + "'");
   }
   run.CheckShapes();
+  CheckFinite(run, impl_->err);
   for (const auto& [key, value] : run.text_attrs) {
     if (run.attrs.count(key) != 0) {
       throw std::logic_error("RunRecord " + RunGroupName(run.index) + ": attribute '" + key +

@@ -66,7 +66,8 @@ class DatasetWriter {
   DatasetWriter& operator=(const DatasetWriter&) = delete;
 
   /// Writes /runs/run_NNNN with all arrays (float arrays chunked and compressed) and
-  /// attributes.
+  /// attributes. Throws InputError, writing nothing of the run, if an array holds a
+  /// non-finite value (NaN in an attribute means "did not happen" and is kept).
   void WriteRun(const RunRecord& run);
   /// Flushes, closes and renames the temporary file to `path`.
   void Commit();

@@ -1,10 +1,15 @@
 #include "sim/config.h"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace tactip {
@@ -36,13 +41,55 @@ std::string FormatReal(double v) {
   return std::string(buf, res.ptr);
 }
 
+namespace {
+
+// `v` to `digits` significant digits, rounded towards -inf (down) or +inf, such that the
+// text parses back to a value on that side of `v`; more digits where rounding alone is
+// not enough.
+std::string FormatRounded(double v, bool down) {
+  if (v == 0.0 || !std::isfinite(v)) return FormatReal(v);
+  for (int digits = 3; digits <= 17; ++digits) {
+    const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(v))));
+    const double r = (down ? std::floor(v * scale) : std::ceil(v * scale)) / scale;
+    const std::string text = fmt::format("{:.{}g}", r, digits);
+    const double back = std::strtod(text.c_str(), nullptr);
+    if (down ? back <= v : back >= v) return text;
+  }
+  return FormatReal(v);
+}
+
+}  // namespace
+
+std::string FormatAtMost(double limit) { return FormatRounded(limit, true); }
+std::string FormatAtLeast(double limit) { return FormatRounded(limit, false); }
+
+std::string Escaped(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (ch == '\n') {
+      out += "\\n";
+    } else if (ch == '\r') {
+      out += "\\r";
+    } else if (ch == '\t') {
+      out += "\\t";
+    } else if (c < 0x20 || c == 0x7f) {
+      out += fmt::format("\\x{:02x}", c);
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
 double ParseReal(const std::string& key, const std::string& text) {
   double v = 0.0;
   const char* b = text.data();
   const char* e = b + text.size();
   auto res = std::from_chars(b, e, v);
   if (res.ec != std::errc() || res.ptr != e || text.empty()) {
-    throw InputError(key + " = '" + text + "': not a number");
+    throw InputError(Escaped(key) + " = '" + Escaped(text) + "': not a number");
   }
   return v;
 }
@@ -53,7 +100,7 @@ long long ParseInt(const std::string& key, const std::string& text) {
   const char* e = b + text.size();
   auto res = std::from_chars(b, e, v);
   if (res.ec != std::errc() || res.ptr != e || text.empty()) {
-    throw InputError(key + " = '" + text + "': not an integer");
+    throw InputError(Escaped(key) + " = '" + Escaped(text) + "': not an integer");
   }
   return v;
 }
@@ -61,7 +108,7 @@ long long ParseInt(const std::string& key, const std::string& text) {
 bool ParseBool(const std::string& key, const std::string& text) {
   if (text == "true" || text == "1" || text == "yes" || text == "on") return true;
   if (text == "false" || text == "0" || text == "no" || text == "off") return false;
-  throw InputError(key + " = '" + text + "': not a boolean (true/false)");
+  throw InputError(Escaped(key) + " = '" + Escaped(text) + "': not a boolean (true/false)");
 }
 
 void CheckBounds(const std::string& key, double v, const Bounds& b) {
@@ -75,30 +122,57 @@ void CheckChoice(const std::string& key, const std::string& v, const Choices& c)
   }
   std::string list;
   for (const auto& x : c) list += (list.empty() ? "" : ", ") + x;
-  throw InputError(key + " = '" + v + "': must be one of " + list);
+  throw InputError(Escaped(key) + " = '" + Escaped(v) + "': must be one of " + list);
 }
 
 }  // namespace config_detail
 
 namespace {
 
-// Walks a YAML node, writing every scalar leaf under its dotted key.
-void Flatten(const YAML::Node& node, const std::string& prefix, const std::string& source, FlatConfig& out) {
+// A config file has about a hundred keys; a walk that visits more nodes than this is an
+// alias expanding exponentially ("billion laughs"), refused before it exhausts memory.
+constexpr long kMaxYamlNodes = 10000;
+
+// What the walk over one file carries along.
+struct FlattenWalk {
+  const std::string& source;
+  FlatConfig& out;
+  long nodes = 0;
+};
+
+// "file: ... (line N)" for a node.
+std::string AtLine(const YAML::Node& node) { return " (line " + std::to_string(node.Mark().line + 1) + ")"; }
+
+// Walks a YAML node, writing every scalar leaf under its dotted key; each node an alias
+// points to is visited (and counted) again.
+void Flatten(const YAML::Node& node, const std::string& prefix, FlattenWalk& walk) {
+  if (++walk.nodes > kMaxYamlNodes) {
+    throw InputError(walk.source + ": expands to more than " + std::to_string(kMaxYamlNodes) +
+                     " YAML nodes (nested aliases?); a config file has one value per key");
+  }
+  const std::string key = config_detail::Escaped(prefix);
   switch (node.Type()) {
-    case YAML::NodeType::Map:
+    case YAML::NodeType::Map: {
+      std::set<std::string> seen;
       for (const auto& kv : node) {
         const std::string k = kv.first.as<std::string>();
-        Flatten(kv.second, prefix.empty() ? k : prefix + "." + k, source, out);
+        const std::string full = prefix.empty() ? k : prefix + "." + k;
+        if (!seen.insert(k).second) {
+          throw InputError(walk.source + ": key '" + config_detail::Escaped(full) + "' appears twice" +
+                           AtLine(kv.first) + "; give each key once");
+        }
+        Flatten(kv.second, full, walk);
       }
       break;
+    }
     case YAML::NodeType::Scalar:
-      out[prefix] = node.Scalar();
+      walk.out[prefix] = node.Scalar();
       break;
     case YAML::NodeType::Null:
-      if (!prefix.empty()) throw InputError(source + ": key '" + prefix + "' has no value");
+      if (!prefix.empty()) throw InputError(walk.source + ": key '" + key + "' has no value");
       break;
     default:
-      throw InputError(source + ": key '" + prefix + "' must be a scalar or a mapping");
+      throw InputError(walk.source + ": key '" + key + "' must be a scalar or a mapping");
   }
 }
 
@@ -107,28 +181,44 @@ void Flatten(const YAML::Node& node, const std::string& prefix, const std::strin
 FlatConfig FlattenYaml(const std::string& yaml_text, const std::string& source) {
   FlatConfig out;
   try {
-    const YAML::Node root = YAML::Load(yaml_text);
-    if (root.IsNull()) return out;
+    const std::vector<YAML::Node> docs = YAML::LoadAll(yaml_text);
+    if (docs.size() > 1) {
+      throw InputError(source + ": holds " + std::to_string(docs.size()) +
+                       " YAML documents (the second starts after the '---' before line " +
+                       std::to_string(docs[1].Mark().line + 1) + "); a config file is one document");
+    }
+    if (docs.empty() || docs[0].IsNull()) return out;
+    const YAML::Node& root = docs[0];
     if (!root.IsMap()) throw InputError(source + ": top level must be a mapping of sections");
-    Flatten(root, "", source, out);
+    FlattenWalk walk{source, out};
+    Flatten(root, "", walk);
   } catch (const YAML::Exception& e) {
-    throw InputError(source + ": malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+    throw InputError(source + ": malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " +
+                     config_detail::Escaped(e.msg));
   }
   return out;
 }
 
 FlatConfig FlattenYamlFile(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw InputError("cannot read config file '" + path + "'");
+  if (!in) throw InputError("cannot read config file '" + config_detail::Escaped(path) + "'");
   std::stringstream ss;
   ss << in.rdbuf();
-  return FlattenYaml(ss.str(), path);
+  return FlattenYaml(ss.str(), config_detail::Escaped(path));
 }
 
 std::pair<std::string, std::string> ParseAssignment(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) {
-    throw InputError("--set '" + text + "': expected key=value");
+    throw InputError("--set '" + config_detail::Escaped(text) + "': expected key=value");
+  }
+  const bool control = std::any_of(text.begin(), text.end(), [](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return c < 0x20 || c == 0x7f;
+  });
+  if (control) {
+    throw InputError("--set '" + config_detail::Escaped(text) +
+                     "': holds a line break or another control character; a key=value is one line");
   }
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
@@ -148,7 +238,7 @@ void AssignVisitor::operator()(std::string_view name, int& f, std::string_view, 
   if (const auto* t = Take(name)) {
     const long long v = config_detail::ParseInt(Key(name), *t);
     if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
-      throw InputError(Key(name) + " = " + *t + ": out of integer range");
+      throw InputError(Key(name) + " = " + config_detail::Escaped(*t) + ": out of integer range");
     }
     f = static_cast<int>(v);
   }
@@ -280,7 +370,7 @@ void FailRule(const std::string& key, double value, const std::string& rule) {
 }
 
 void FailRule(const std::string& key, const std::string& value, const std::string& rule) {
-  throw InputError(key + " = '" + value + "': " + rule);
+  throw InputError(key + " = '" + config_detail::Escaped(value) + "': " + rule);
 }
 
 }  // namespace tactip

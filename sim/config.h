@@ -72,6 +72,14 @@ namespace config_detail {
 
 /// Formats a double so that parsing it back yields the same bits.
 std::string FormatReal(double v);
+/// `limit` to three significant digits, rounded down (FormatAtMost) or up (FormatAtLeast) so
+/// that the printed value, parsed back, still satisfies "<= limit" or ">= limit": the safe
+/// value a refusal suggests is accepted when entered as printed.
+std::string FormatAtMost(double limit);
+std::string FormatAtLeast(double limit);
+/// `text` with control characters escaped (a line break as \n, others as \xNN), so that
+/// a message quoting user input stays on one line.
+std::string Escaped(std::string_view text);
 /// Parses text into a field value; throws InputError naming `key`.
 double ParseReal(const std::string& key, const std::string& text);
 long long ParseInt(const std::string& key, const std::string& text);
@@ -113,7 +121,8 @@ using FlatConfig = std::map<std::string, std::string>;
 FlatConfig FlattenYaml(const std::string& yaml_text, const std::string& source);
 /// Reads and flattens a YAML file; throws InputError if it is missing or malformed.
 FlatConfig FlattenYamlFile(const std::string& path);
-/// Parses "key=value"; throws InputError if there is no '=' or the key is empty.
+/// Parses "key=value"; throws InputError if there is no '=', the key is empty, or the text
+/// holds a control character (a line break: a value is one line).
 std::pair<std::string, std::string> ParseAssignment(const std::string& text);
 
 /// Visitor that assigns values from a FlatConfig, erasing each key it consumes.
@@ -160,7 +169,7 @@ void ApplyFlat(Config& cfg, FlatConfig values) {
   AssignVisitor v(values);
   cfg.Visit(v);
   if (!values.empty()) {
-    throw InputError("unknown config key '" + values.begin()->first + "'");
+    throw InputError("unknown config key '" + config_detail::Escaped(values.begin()->first) + "'");
   }
 }
 

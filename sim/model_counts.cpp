@@ -18,6 +18,7 @@ ModelCounts CountModel(const CompiledModel& model) {
   c.nlight = m->nlight;
   c.nconmax = m->nconmax;
   c.njmax = m->njmax;
+  c.nstack = m->nstack;
   return c;
 }
 

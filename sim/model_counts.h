@@ -16,6 +16,7 @@ struct ModelCounts {
   int nlight = 0;            ///< lights
   int nconmax = 0;           ///< contact budget (sizes mjData)
   int njmax = 0;             ///< constraint-row budget (sizes mjData)
+  long long nstack = 0;      ///< solver stack each mjData reserves, in numbers (8 bytes each)
 };
 
 ModelCounts CountModel(const CompiledModel& model);

@@ -6,44 +6,119 @@
 
 #include <fmt/format.h>
 
+#include "models/scene_size.h"
 #include "models/stability.h"
 
 namespace tactip {
+
+namespace {
+
+using config_detail::FormatAtLeast;
+using config_detail::FormatAtMost;
+
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+
+// The press: no deeper than a TacTip tolerates, and towards the stimulus (a negative depth
+// stops short of it: an empty contact); the retraction must end within an hour.
+void CheckPress(const RailConfig& rail) {
+  const double deepest_mm = rail.press_depth_mm + rail.press_depth_jitter_mm;
+  if (deepest_mm > RailConfig::kMaxPressDepthMm) {
+    FailRule("rail.press_depth_jitter_mm", rail.press_depth_jitter_mm,
+             fmt::format("the deepest press, rail.press_depth_mm + rail.press_depth_jitter_mm = {} + {} = {:.3g} mm, "
+                         "is beyond the {:.3g} mm a TacTip tolerates; use rail.press_depth_jitter_mm <= {}",
+                         rail.press_depth_mm, rail.press_depth_jitter_mm, deepest_mm, RailConfig::kMaxPressDepthMm,
+                         FormatAtMost(RailConfig::kMaxPressDepthMm - rail.press_depth_mm)));
+  }
+  const double travel_mm = rail.approach_gap_mm + rail.press_depth_mm - rail.press_depth_jitter_mm;
+  if (travel_mm <= 0.0) {
+    FailRule("rail.press_depth_mm", rail.press_depth_mm,
+             fmt::format("the press would not move the sensor towards the stimulus (rail.approach_gap_mm + "
+                         "press_depth_mm - press_depth_jitter_mm = {:.3g} mm); use rail.press_depth_mm > {}",
+                         travel_mm, FormatAtLeast(rail.press_depth_jitter_mm - rail.approach_gap_mm)));
+  }
+  constexpr double kMaxRetractS = 3600.0;
+  const double retract_mm = rail.approach_gap_mm + rail.press_depth_mm + rail.press_depth_jitter_mm + 5.0;
+  if (retract_mm / rail.retract_speed_mm_s > kMaxRetractS) {
+    FailRule("rail.retract_speed_mm_s", rail.retract_speed_mm_s,
+             fmt::format("the retraction would take {:g} s of simulated time (limit {:g} s); use >= {}",
+                         retract_mm / rail.retract_speed_mm_s, kMaxRetractS, FormatAtLeast(retract_mm / kMaxRetractS)));
+  }
+}
+
+// The scene must fit in the solver memory MuJoCo reserves per run; names the skin's pin
+// count key and the largest value that fits (or the ring spacing that does).
+void CheckSceneSize(const RailScenarioConfig& c) {
+  const SceneSize size = EstimateRailScene(c.SceneSpec());
+  if (size.Fits()) return;
+  const bool fingerprint = c.skin.Fingerprint();
+  const std::string key = fingerprint ? "skin.pins_per_ring" : "skin.rings";
+  const int current = fingerprint ? c.skin.pins_per_ring : c.skin.rings;
+  const std::string what = fmt::format(
+      "the skin has {} pins ({} can touch the stimulus), for which MuJoCo would reserve {:.3g} GiB of solver stack per "
+      "run (limit {:.3g} GiB)",
+      size.n_pins, size.n_collidable, size.stack_bytes / kGiB, kMaxSolverStackBytes / kGiB);
+  RailScenarioConfig trial = c;
+  for (int v = current - 1; v >= 1; --v) {
+    (fingerprint ? trial.skin.pins_per_ring : trial.skin.rings) = v;
+    if (EstimateRailScene(trial.SceneSpec()).Fits()) {
+      FailRule(key, current, fmt::format("{}; use {} <= {}", what, key, v));
+    }
+  }
+  // A fingerprint skin too large even at one pin per ring: wider rings.
+  trial = c;
+  const double first_spacing = std::ceil(2.0 * c.skin.ridge_spacing_mm) / 2.0;
+  for (double s = first_spacing; fingerprint && s <= c.skin.pattern_radius_mm; s += 0.5) {
+    trial.skin.ridge_spacing_mm = s;
+    if (EstimateRailScene(trial.SceneSpec()).Fits()) {
+      FailRule(key, current, fmt::format("{}; use skin.ridge_spacing_mm >= {}", what, s));
+    }
+  }
+  FailRule(key, current, what + "; use a skin with fewer pins");
+}
+
+// The timestep: below the stability limit of every mode and, for a skin with per-pin shear
+// DOFs, no larger than its validated step. Either refusal suggests the largest step that
+// passes both, rounded down so that it passes as printed.
+void CheckTimestep(const RailScenarioConfig& c) {
+  if (!c.sim.check_stability) return;
+  const StiffMode mode = RailStiffestMode(c.SceneSpec());
+  const double dt_max = mode.MaxTimestep();
+  const double validated = ShearDofValidatedTimestep(c.skin, c.contact);
+  const double safe = std::min(dt_max, validated);
+  const std::string other = mode.other_fix.empty() ? "" : " or " + mode.other_fix;
+  const std::string advice =
+      safe >= SimConfig::kMinTimestepS
+          ? fmt::format("use sim.timestep_s <= {}", FormatAtMost(safe))
+          : fmt::format("no sim.timestep_s >= {} is stable: use other values of the keys that set it",
+                        SimConfig::kMinTimestepS);
+  if (c.sim.timestep_s > dt_max) {
+    FailRule("sim.timestep_s", c.sim.timestep_s,
+             fmt::format("unstable: exceeds the limit {} s of {} (omega = {:.0f} rad/s, damping ratio {:.2f}); {}{}",
+                         FormatAtMost(dt_max), mode.name, mode.omega, mode.zeta, advice, other));
+  }
+  if (c.sim.timestep_s > validated * (1.0 + 1e-9)) {
+    FailRule("sim.timestep_s", c.sim.timestep_s,
+             fmt::format("skin.coupling = {} (per-pin shear DOFs) at contact.friction = {} is validated up to "
+                         "{} s: at larger steps its slip events create energy; {}",
+                         c.skin.coupling, c.contact.friction, FormatAtMost(validated), advice));
+  }
+}
+
+}  // namespace
 
 void RailScenarioConfig::ValidateRules() const {
   // Section rules first, then rules that tie sections together.
   sim.ValidateRules();
   skin.ValidateRules();
   contact.ValidateRules();
+  sensor.ValidateRules();
+  external.ValidateIntrinsics(sensor);
   if (contact.timeconst_s < 2.0 * sim.timestep_s) {
     FailRule("contact.timeconst_s", contact.timeconst_s,
              fmt::format("must be >= 2 * sim.timestep_s = {} s (MuJoCo would silently soften it)",
                          2.0 * sim.timestep_s));
   }
-  // The press: no deeper than a TacTip tolerates, and towards the stimulus (a negative
-  // depth stops short of it: an empty contact).
-  const double deepest_mm = rail.press_depth_mm + rail.press_depth_jitter_mm;
-  if (deepest_mm > RailConfig::kMaxPressDepthMm) {
-    FailRule("rail.press_depth_jitter_mm", rail.press_depth_jitter_mm,
-             fmt::format("the deepest press, rail.press_depth_mm + jitter = {:.3g} mm, is beyond the {:.3g} mm a TacTip "
-                         "tolerates; use rail.press_depth_jitter_mm <= {:.3g}",
-                         deepest_mm, RailConfig::kMaxPressDepthMm, RailConfig::kMaxPressDepthMm - rail.press_depth_mm));
-  }
-  const double travel_mm = rail.approach_gap_mm + rail.press_depth_mm - rail.press_depth_jitter_mm;
-  if (travel_mm <= 0.0) {
-    FailRule("rail.press_depth_mm", rail.press_depth_mm,
-             fmt::format("the press would not move the sensor towards the stimulus (rail.approach_gap_mm + "
-                         "press_depth_mm - press_depth_jitter_mm = {:.3g} mm); use rail.press_depth_mm > {:.3g}",
-                         travel_mm, rail.press_depth_jitter_mm - rail.approach_gap_mm));
-  }
-  // A run must end: the retraction (past the press plus 5 mm) within an hour of simulation.
-  constexpr double kMaxRetractS = 3600.0;
-  const double retract_mm = rail.approach_gap_mm + rail.press_depth_mm + rail.press_depth_jitter_mm + 5.0;
-  if (retract_mm / rail.retract_speed_mm_s > kMaxRetractS) {
-    FailRule("rail.retract_speed_mm_s", rail.retract_speed_mm_s,
-             fmt::format("the retraction would take {:g} s of simulated time (limit {:g} s); use >= {:.3g}",
-                         retract_mm / rail.retract_speed_mm_s, kMaxRetractS, retract_mm / kMaxRetractS));
-  }
+  CheckPress(rail);
   if (external.enabled && rail.stimulus != "acrylic") {
     FailRule("external.enabled", 1.0,
              "the external camera sees the skin only through a transparent stimulus: set rail.stimulus = acrylic");
@@ -53,24 +128,8 @@ void RailScenarioConfig::ValidateRules() const {
     FailRule("sensor.frame_rate_hz", sensor.frame_rate_hz,
              fmt::format("one frame ({} s) is shorter than sim.timestep_s = {} s", frame_dt, sim.timestep_s));
   }
-  if (sim.check_stability) {
-    const StiffMode mode = RailStiffestMode(SceneSpec());
-    const double dt_max = mode.MaxTimestep();
-    if (sim.timestep_s > dt_max) {
-      FailRule("sim.timestep_s", sim.timestep_s,
-               fmt::format("unstable: exceeds the limit {:.3g} s of {} (omega = {:.0f} rad/s, damping ratio {:.2f}); "
-                           "use sim.timestep_s <= {:.3g}{}",
-                           dt_max, mode.name, mode.omega, mode.zeta, dt_max,
-                           mode.other_fix.empty() ? "" : " or " + mode.other_fix));
-    }
-    const double validated = ShearDofValidatedTimestep(skin, contact);
-    if (sim.timestep_s > validated * (1.0 + 1e-9)) {
-      FailRule("sim.timestep_s", sim.timestep_s,
-               fmt::format("skin.coupling = {} (per-pin shear DOFs) at contact.friction = {} is validated up to "
-                           "{:.3g} s: at larger steps its slip events create energy; use sim.timestep_s <= {:.3g}",
-                           skin.coupling, contact.friction, validated, validated));
-    }
-  }
+  CheckSceneSize(*this);
+  CheckTimestep(*this);
 }
 
 TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {

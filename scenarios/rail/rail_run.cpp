@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 namespace tactip {
 
 namespace {
@@ -114,6 +116,9 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
       clean_px_(2 * n_),
       valid_(n_),
       ext_valid_(n_),
+      limits_(StateLimits::For(cfg, ids.scene.n_collidable)),
+      marker_shift_m_(n_),
+      normal_N_(n_),
       health_(n_, cfg.health),
       slid_before_gross_(n_, 0),
       end_time_(sched_.give_up),
@@ -126,6 +131,9 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
   model_.EnableEnergy();
   sim_.emplace(model_);
   sim_->Forward();
+  const auto origin = sim_->BodyPos(im_.sensor_body);
+  const auto rot = sim_->BodyRot(im_.sensor_body);
+  for (int i = 0; i < n_; ++i) rest_marker_m_.push_back(ToSensorFrame(sim_->SitePos(im_.pin_site[i]), origin, rot));
   sum_.press_depth_mm = depth_m_ * 1e3;
   sum_.friction = mu_;
   sum_.retract_start_s = sched_.retract_start;
@@ -292,6 +300,15 @@ void RailRun::RecordFrame(double t, RunRecord& rec) {
   RecordPins(rec);
   if (c_.external.enabled) RecordExternal(rec);
   RecordContacts(t, rec);
+  CheckPlausible(t);
+}
+
+void RailRun::CheckPlausible(double t) const {
+  const std::string why = ImplausibleState(limits_, marker_shift_m_, normal_N_);
+  if (why.empty()) return;
+  throw SimulationError(fmt::format("run {} stopped at t = {:.4f} s: {}: the solver diverged without a MuJoCo warning; "
+                                    "use a smaller sim.timestep_s or more sim.iterations",
+                                    index_, t, why));
 }
 
 namespace {
@@ -320,6 +337,9 @@ void RailRun::RecordPins(RunRecord& rec) {
   image_gain_px_m_ = 0.0;
   for (int i = 0; i < n_; ++i) {
     auto p = ToSensorFrame(sim_->SitePos(im_.pin_site[i]), origin_, rot_);
+    marker_shift_m_[i] = std::sqrt((p[0] - rest_marker_m_[i][0]) * (p[0] - rest_marker_m_[i][0]) +
+                                   (p[1] - rest_marker_m_[i][1]) * (p[1] - rest_marker_m_[i][1]) +
+                                   (p[2] - rest_marker_m_[i][2]) * (p[2] - rest_marker_m_[i][2]));
     if (im_.marker_rock_m_N > 0.0) {
       const auto fs = VectorToSensorFrame(tangential_[i], origin_, rot_);
       for (int k = 0; k < 3; ++k) p[k] -= im_.marker_rock_m_N * fs[k];
@@ -354,6 +374,7 @@ void RailRun::RecordExternal(RunRecord& rec) {
 void RailRun::RecordContacts(double t, RunRecord& rec) {
   // Contact forces (tangential in sensor y, z) and stick/slip labels.
   for (int i = 0; i < n_; ++i) {
+    normal_N_[i] = contacts_[i].normal_N;
     rec.normal_N.push_back(static_cast<float>(contacts_[i].normal_N));
     const auto fts = VectorToSensorFrame(tangential_[i], origin_, rot_);
     rec.tangential_N.push_back(static_cast<float>(fts[1]));

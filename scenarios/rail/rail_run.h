@@ -15,6 +15,7 @@
 #include "scenarios/rail/rail_scenario.h"
 #include "scenarios/rail/rail_schedule.h"
 #include "scenarios/rail/run_health.h"
+#include "scenarios/rail/state_limits.h"
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
 #include "sensors/labels.h"
@@ -72,6 +73,7 @@ class RailRun {
   void RecordContacts(double t, RunRecord& rec);
   void TrackEvents(double t, double tf);
   void TrackHealth(double t);
+  void CheckPlausible(double t) const;
   void RecordControls(double t);
   void Finish(RunRecord& rec);
 
@@ -109,6 +111,11 @@ class RailRun {
   std::vector<std::uint8_t> valid_, ext_valid_;
   std::array<double, 3> origin_{};
   std::array<double, 9> rot_{};
+
+  // Per frame: is the state physically possible (StateLimits)?
+  const StateLimits limits_;
+  std::vector<std::array<double, 3>> rest_marker_m_;  // per pin: its marker at rest, sensor frame
+  std::vector<double> marker_shift_m_, normal_N_;      // per pin, this frame
 
   RunInstrumentation* instrument_ = nullptr;
 

@@ -34,14 +34,14 @@ struct Refusal {
 };
 const Refusal kRefusals[] = {
     {"gel-x100",
-     {"sim.timestep_s = 0.002: unstable: exceeds the limit 0.000761 s of the skin's pin normal mode",
-      "use sim.timestep_s <= 0.000761"}},
+     {"sim.timestep_s = 0.002: unstable: exceeds the limit 0.00076 s of the skin's pin normal mode",
+      "use sim.timestep_s <= 0.00076"}},
     {"skin-x100",
      {"sim.timestep_s = 0.002: unstable: exceeds the limit 0.000216 s of the skin's pin normal mode",
       "use sim.timestep_s <= 0.000216"}},
     {"dt-5ms",
-     {"sim.timestep_s = 0.005: unstable: exceeds the limit 0.00255 s of the skin's pin normal mode",
-      "use sim.timestep_s <= 0.00255"}},
+     {"sim.timestep_s = 0.005: unstable: exceeds the limit 0.00254 s of the skin's pin normal mode",
+      "use sim.timestep_s <= 0.00254"}},
     {"v2-mu-3",
      {"sim.timestep_s = 0.001: skin.coupling = membrane (per-pin shear DOFs) at contact.friction = 3 is validated up to "
       "0.000333 s",
@@ -52,8 +52,8 @@ const Refusal kRefusals[] = {
       "use sim.timestep_s <= 0.001"}},
     {"depth-7.5mm", {"rail.press_depth_mm = 7.5: must be <= 7"}},
     {"depth-7mm-jitter",
-     {"rail.press_depth_jitter_mm = 0.5: the deepest press, rail.press_depth_mm + jitter = 7.5 mm, is beyond the 7 mm "
-      "a TacTip tolerates; use rail.press_depth_jitter_mm <= 0"}},
+     {"rail.press_depth_jitter_mm = 0.5: the deepest press, rail.press_depth_mm + rail.press_depth_jitter_mm = 7 + 0.5 "
+      "= 7.5 mm, is beyond the 7 mm a TacTip tolerates; use rail.press_depth_jitter_mm <= 0"}},
 };
 
 std::vector<std::string> RailKeys() {
@@ -272,7 +272,7 @@ TEST_F(StabilityCliTest, AutoTimestepPrintsTheStepAndWhatBindsIt) {
   // Without the flag the same config is refused, naming the safe step.
   const CliResult s = Run("config rail --yaml --set skin.gel_modulus_kpa=10000");
   EXPECT_EQ(s.code, 2);
-  EXPECT_NE(s.err.find("use sim.timestep_s <= 0.000761"), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("use sim.timestep_s <= 0.00076"), std::string::npos) << s.err;
 }
 
 }  // namespace

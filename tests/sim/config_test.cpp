@@ -103,6 +103,55 @@ TEST(ConfigTest, MalformedYamlNamesFileAndLine) {
             std::string::npos);
 }
 
+// A 10^9-leaf "billion laughs" of nested anchors and aliases, in under 1 kB.
+std::string AliasBomb() {
+  std::string y = "l0: &l0 {a: x, b: x, c: x, d: x, e: x, f: x, g: x, h: x, i: x, j: x}\n";
+  for (int level = 1; level <= 8; ++level) {
+    const std::string prev = "*l" + std::to_string(level - 1);
+    y += "l" + std::to_string(level) + ": &l" + std::to_string(level) + " {";
+    for (char k = 'a'; k <= 'j'; ++k) y += std::string(k == 'a' ? "" : ", ") + k + ": " + prev;
+    y += "}\n";
+  }
+  return y;
+}
+
+TEST(ConfigTest, AliasBombIsRefusedBeforeItExpands) {
+  const std::string yaml = AliasBomb();
+  ASSERT_LT(yaml.size(), 1000u);
+  EXPECT_EQ(ErrorOf([&] { FlattenYaml(yaml, "bomb.yaml"); }),
+            "bomb.yaml: expands to more than 10000 YAML nodes (nested aliases?); a config file has one value per key");
+  // A few aliases that expand to a handful of keys are still fine.
+  const FlatConfig flat = FlattenYaml("rail: &r {count: 4, mode: b}\nother: *r\n", "alias.yaml");
+  EXPECT_EQ(flat.at("other.count"), "4");
+  EXPECT_EQ(flat.at("other.mode"), "b");
+}
+
+TEST(ConfigTest, DuplicateKeyIsRefusedNamingTheKeyAndLine) {
+  EXPECT_EQ(ErrorOf([] { FlattenYaml("rail:\n  count: 2\n  count: 4\n", "dup.yaml"); }),
+            "dup.yaml: key 'rail.count' appears twice (line 3); give each key once");
+  EXPECT_EQ(ErrorOf([] { FlattenYaml("rail:\n  count: 2\nother:\n  flag: true\nrail:\n  mode: b\n", "dup.yaml"); }),
+            "dup.yaml: key 'rail' appears twice (line 5); give each key once");
+}
+
+TEST(ConfigTest, SecondYamlDocumentIsRefused) {
+  EXPECT_EQ(ErrorOf([] { FlattenYaml("rail:\n  count: 2\n---\nrail:\n  count: 4\n", "two.yaml"); }),
+            "two.yaml: holds 2 YAML documents (the second starts after the '---' before line 4); a config file is "
+            "one document");
+  // An explicit start marker on the one document is fine.
+  EXPECT_EQ(FlattenYaml("---\nrail:\n  count: 2\n", "one.yaml").at("rail.count"), "2");
+}
+
+TEST(ConfigTest, LineBreakInAValueGivesAOneLineMessageShowingItEscaped) {
+  EXPECT_EQ(ErrorOf([] { ParseAssignment("rail.count=5\nx"); }),
+            "--set 'rail.count=5\\nx': holds a line break or another control character; a key=value is one line");
+  Outer c;
+  const std::string msg = ErrorOf([&] { ApplyFlat(c, FlattenYaml("rail:\n  count: \"5\\nx\"\n", "nl.yaml")); });
+  EXPECT_EQ(msg, "rail.count = '5\\nx': not an integer");
+  EXPECT_EQ(ErrorOf([&] { ApplyFlat(c, FlatConfig{{"rail.mode", "a\tb"}}); }),
+            "rail.mode = 'a\\tb': must be one of a, b");
+  EXPECT_EQ(config_detail::Escaped(std::string("a\x01" "b\r")), "a\\x01b\\r");
+}
+
 TEST(ConfigTest, MissingFileIsAnError) {
   EXPECT_EQ(ErrorOf([] { FlattenYamlFile("/nonexistent/x.yaml"); }), "cannot read config file '/nonexistent/x.yaml'");
 }
