@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "sensors/hdf5_discard.h"
 #include "sim/config.h"
 #include "sim/files.h"
 
@@ -26,6 +27,8 @@ namespace {
 constexpr hsize_t kChunkFrames = 256;
 /// zlib level of chunked arrays.
 constexpr unsigned kDeflateLevel = 4;
+/// Bytes that must be free when a file is created: more than H5Fcreate writes.
+constexpr long long kHeaderRoom = 16 * 1024;
 
 /// Owns one HDF5 identifier and releases it with the matching close function.
 class Hid {
@@ -100,13 +103,27 @@ std::string Hdf5Detail() {
   };
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, visit, &detail);
   std::replace(detail.begin(), detail.end(), '\n', ' ');
+  // The POSIX driver's reports ("file write failed: time = ..., errno = 28, error message =
+  // 'No space left on device', buf = ...") carry a clock time and addresses: keep the reason.
+  constexpr std::string_view kReason = "error message = '";
+  const size_t colon = detail.find(':');
+  const size_t at = detail.find(kReason);
+  const size_t end = at == std::string::npos ? at : detail.find('\'', at + kReason.size());
+  if (colon != std::string::npos && end != std::string::npos && colon < at) {
+    detail = detail.substr(0, colon + 1) + " " + detail.substr(at + kReason.size(), end - at - kReason.size());
+  }
   return detail;
+}
+
+/// prefix + what, with HDF5's own reason in parentheses when it has one.
+std::string FailureMessage(const std::string& prefix, const std::string& what) {
+  const std::string detail = Hdf5Detail();
+  return prefix + what + (detail.empty() ? "" : " (" + detail + ")");
 }
 
 /// Throws InputError(prefix + what), adding HDF5's own reason when it has one.
 [[noreturn]] void Fail(const std::string& prefix, const std::string& what) {
-  const std::string detail = Hdf5Detail();
-  throw InputError(prefix + what + (detail.empty() ? "" : " (" + detail + ")"));
+  throw InputError(FailureMessage(prefix, what));
 }
 
 /// Wraps a freshly returned identifier, throwing via Fail() if the call failed.
@@ -118,6 +135,34 @@ Hid Must(hid_t id, Hid::Closer close, const std::string& prefix, const std::stri
 /// Throws via Fail() if an HDF5 call returned a negative status.
 void MustOk(herr_t status, const std::string& prefix, const std::string& what) {
   if (status < 0) Fail(prefix, what);
+}
+
+/// How writing a file fails: the message prefix ("cannot write dataset 'PATH': ") and the
+/// file being written. A failure abandons the file and discards its pending writes before
+/// throwing, so the identifiers closed while the exception unwinds cannot fail on a full
+/// disk (see DiscardPendingWrites).
+struct WriteErrors {
+  std::string prefix;
+  hid_t file = H5I_INVALID_HID;  ///< the file once created (not owned)
+  bool failed = false;           ///< a write failed: the file will not be published
+
+  [[noreturn]] void Fail(const std::string& what) {
+    const std::string message = FailureMessage(prefix, what);  // before HDF5's error stack changes
+    failed = true;
+    DiscardPendingWrites(file);
+    throw InputError(message);
+  }
+};
+
+/// Must() for the writer: a failure abandons the file.
+Hid Must(hid_t id, Hid::Closer close, WriteErrors& err, const std::string& what) {
+  if (id < 0) err.Fail(what);
+  return Hid(id, close);
+}
+
+/// MustOk() for the writer: a failure abandons the file.
+void MustOk(herr_t status, WriteErrors& err, const std::string& what) {
+  if (status < 0) err.Fail(what);
 }
 
 /// File and memory HDF5 types of an array element type.
@@ -140,7 +185,7 @@ struct H5Types<std::uint8_t> {
 };
 
 /// Variable-length UTF-8 string type (what h5py reads as str).
-Hid Utf8StringType(const std::string& err) {
+Hid Utf8StringType(WriteErrors& err) {
   Hid type = Must(H5Tcopy(H5T_C_S1), H5Tclose, err, "cannot create string type");
   MustOk(H5Tset_size(type.get(), H5T_VARIABLE), err, "cannot create string type");
   MustOk(H5Tset_cset(type.get(), H5T_CSET_UTF8), err, "cannot create string type");
@@ -148,14 +193,14 @@ Hid Utf8StringType(const std::string& err) {
 }
 
 /// Group creation properties without modification times (keeps files byte-identical).
-Hid UntimedGroupProps(const std::string& err) {
+Hid UntimedGroupProps(WriteErrors& err) {
   Hid gcpl = Must(H5Pcreate(H5P_GROUP_CREATE), H5Pclose, err, "cannot create group properties");
   MustOk(H5Pset_obj_track_times(gcpl.get(), 0), err, "cannot disable group times");
   return gcpl;
 }
 
 /// Creates group `name` under `parent`; `where` is its full path for messages.
-Hid CreateGroup(hid_t parent, const char* name, const std::string& where, const std::string& err) {
+Hid CreateGroup(hid_t parent, const char* name, const std::string& where, WriteErrors& err) {
   const Hid gcpl = UntimedGroupProps(err);
   return Must(H5Gcreate2(parent, name, H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose, err,
               "cannot create group " + where);
@@ -163,7 +208,7 @@ Hid CreateGroup(hid_t parent, const char* name, const std::string& where, const 
 
 /// Writes a scalar string attribute `name` = `value` on object `obj` (path `where`).
 void WriteStringAttr(hid_t obj, const std::string& name, const std::string& value, const std::string& where,
-                     const std::string& err) {
+                     WriteErrors& err) {
   const std::string what = "cannot write attribute '" + name + "' of " + where;
   const Hid type = Utf8StringType(err);
   const Hid space = Must(H5Screate(H5S_SCALAR), H5Sclose, err, what);
@@ -175,7 +220,7 @@ void WriteStringAttr(hid_t obj, const std::string& name, const std::string& valu
 
 /// Writes a scalar numeric attribute stored as `file_type`, read from `value` as `mem_type`.
 void WriteScalarAttr(hid_t obj, const std::string& name, hid_t file_type, hid_t mem_type, const void* value,
-                     const std::string& where, const std::string& err) {
+                     const std::string& where, WriteErrors& err) {
   const std::string what = "cannot write attribute '" + name + "' of " + where;
   const Hid space = Must(H5Screate(H5S_SCALAR), H5Sclose, err, what);
   const Hid attr =
@@ -188,7 +233,7 @@ void WriteScalarAttr(hid_t obj, const std::string& name, hid_t file_type, hid_t 
 /// deflate-compressed; 1-D arrays are contiguous.
 template <class T>
 void WriteArray(hid_t parent, const char* name, const std::vector<hsize_t>& shape, const std::vector<T>& data,
-                const char* units, const std::string& where, const std::string& err) {
+                const char* units, const std::string& where, WriteErrors& err) {
   const std::string path = where + "/" + name;
   const int rank = static_cast<int>(shape.size());
   const Hid space = Must(H5Screate_simple(rank, shape.data(), nullptr), H5Sclose, err, "cannot create " + path);
@@ -201,7 +246,11 @@ void WriteArray(hid_t parent, const char* name, const std::vector<hsize_t>& shap
     MustOk(H5Pset_chunk(dcpl.get(), rank, chunk.data()), err, "cannot chunk " + path);
     MustOk(H5Pset_deflate(dcpl.get(), kDeflateLevel), err, "cannot compress " + path);
   }
-  const Hid dset = Must(H5Dcreate2(parent, name, H5Types<T>::file(), space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+  // No chunk cache: H5Dwrite writes every chunk itself and reports a failure, instead of
+  // the close doing it (HDF5 1.10 cannot recover from a failed H5Dclose).
+  const Hid dapl = Must(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose, err, "cannot create " + path);
+  MustOk(H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT), err, "cannot create " + path);
+  const Hid dset = Must(H5Dcreate2(parent, name, H5Types<T>::file(), space.get(), H5P_DEFAULT, dcpl.get(), dapl.get()),
                         H5Dclose, err, "cannot create " + path);
   MustOk(H5Dwrite(dset.get(), H5Types<T>::mem(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), err,
          "cannot write " + path);
@@ -393,12 +442,14 @@ struct DatasetWriter::Impl {
   std::string temp_path;   ///< file to delete
   bool created = false;    ///< we created temp_path (so we may delete it)
   bool keep = false;       ///< renamed into place: do not delete
-  std::string err;         ///< "cannot write dataset 'PATH': "
+  WriteErrors err;         ///< "cannot write dataset 'PATH': ", and whether a write failed
   Hid file;                ///< temporary HDF5 file
   Hid runs;                ///< its /runs group
 
   ~Impl() {
     const QuietHdf5 quiet;
+    // The file is deleted unless committed: closing it must not write (or fail on) the disk.
+    if (!keep) DiscardPendingWrites(file.get());
     runs.Close();
     file.Close();
     if (created && !keep) std::remove(temp_path.c_str());
@@ -410,11 +461,11 @@ DatasetWriter::DatasetWriter(const std::string& path, const DatasetHeader& heade
   const QuietHdf5 quiet;
   Impl& im = *impl_;
   im.temp_path = temp_path_;
-  im.err = "cannot write dataset '" + path + "': ";
+  im.err.prefix = "cannot write dataset '" + path + "': ";
   namespace fs = std::filesystem;
   std::error_code ec;
   if (path.empty()) throw InputError("cannot write dataset '': empty path");
-  if (fs::is_directory(path, ec)) throw InputError(im.err + "is a directory");
+  if (fs::is_directory(path, ec)) throw InputError(im.err.prefix + "is a directory");
 
   // Create the temporary file ourselves first, so errno says why a folder is unusable.
   const int fd = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -423,11 +474,18 @@ DatasetWriter::DatasetWriter(const std::string& path, const DatasetHeader& heade
     const std::string parent = fs::path(path).parent_path().string();
     const std::string folder = parent.empty() ? "." : parent;
     // ENOENT also comes from folders that exist but take no new files (such as /proc).
-    if (why == ENOENT && !fs::is_directory(folder, ec)) throw InputError(im.err + "folder '" + folder + "' does not exist");
-    throw InputError(im.err + "cannot create a file in folder '" + folder + "' (" + std::strerror(why) + ")");
+    if (why == ENOENT && !fs::is_directory(folder, ec)) {
+      throw InputError(im.err.prefix + "folder '" + folder + "' does not exist");
+    }
+    throw InputError(im.err.prefix + "cannot create a file in folder '" + folder + "' (" + std::strerror(why) + ")");
   }
   ::close(fd);
   im.created = true;
+  // A disk without room for the file's header fails here: HDF5 1.10 leaks memory when
+  // H5Fcreate itself cannot write (H5Fcreate truncates the file, releasing the room again).
+  if (const int why = ReserveFileSpace(temp_path_, kHeaderRoom); why != 0) {
+    throw InputError(im.err.prefix + std::strerror(why));
+  }
 
   // No modification times anywhere (root group included); format readable by HDF5 >= 1.8.
   const Hid fcpl = Must(H5Pcreate(H5P_FILE_CREATE), H5Pclose, im.err, "cannot create file properties");
@@ -435,8 +493,12 @@ DatasetWriter::DatasetWriter(const std::string& path, const DatasetHeader& heade
   const Hid fapl = Must(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, im.err, "cannot create file properties");
   MustOk(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_EARLIEST, H5F_LIBVER_V18), im.err, "cannot set format");
   MustOk(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), im.err, "cannot set close degree");
+  MustOk(H5Pset_fapl_sec2(fapl.get()), im.err, "cannot set file driver");  // what DiscardPendingWrites redirects
+  // No sieve buffer: H5Dwrite writes contiguous arrays itself (see WriteArray).
+  MustOk(H5Pset_sieve_buf_size(fapl.get(), 0), im.err, "cannot set sieve buffer");
   im.file = Must(H5Fcreate(temp_path_.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), H5Fclose, im.err,
                  "cannot create HDF5 file '" + temp_path_ + "'");
+  im.err.file = im.file.get();
 
   // Root attributes, then the (possibly empty) /runs group.
   const hid_t root = im.file.get();
@@ -459,8 +521,9 @@ void DatasetWriter::WriteRun(const RunRecord& run) {
   if (committed_ || !impl_ || !impl_->file.valid()) {
     throw std::logic_error("DatasetWriter::WriteRun called after Commit for '" + path_ + "'");
   }
+  if (impl_->err.failed) throw std::logic_error("DatasetWriter::WriteRun called after a failed write to '" + path_ + "'");
   run.CheckShapes();
-  CheckFinite(run, impl_->err);
+  CheckFinite(run, impl_->err.prefix);
   for (const auto& [key, value] : run.text_attrs) {
     if (run.attrs.count(key) != 0) {
       throw std::logic_error("RunRecord " + RunGroupName(run.index) + ": attribute '" + key +
@@ -525,25 +588,33 @@ void DatasetWriter::Commit() {
   if (committed_ || !impl_ || !impl_->file.valid()) {
     throw std::logic_error("DatasetWriter::Commit called twice for '" + path_ + "'");
   }
+  if (impl_->err.failed) throw std::logic_error("DatasetWriter::Commit called after a failed write to '" + path_ + "'");
   Impl& im = *impl_;
   {
     const QuietHdf5 quiet;
-    // Closing flushes everything; a failure here (e.g. disk full) keeps the temp file
-    // for ~Impl to delete.
+    // Closing writes the cached metadata, and HDF5 1.10 cannot recover from a failed close:
+    // reserve the disk space of the whole file first, so a full disk fails here, with the
+    // file still open for ~Impl to abandon and delete.
     MustOk(im.runs.Close(), im.err, "cannot close /runs");
-    MustOk(im.file.Close(), im.err, "cannot close '" + temp_path_ + "'");
+    hsize_t size = 0;
+    MustOk(H5Fget_filesize(im.file.get(), &size), im.err, "cannot size '" + temp_path_ + "'");
+    if (const int why = ReserveFileSpace(temp_path_, static_cast<long long>(size)); why != 0) {
+      im.err.Fail("cannot write '" + temp_path_ + "': " + std::strerror(why));
+    }
+    im.err.file = H5I_INVALID_HID;  // not to be touched after its close, even a failed one
+    MustOk(im.file.Close(), im.err.prefix, "cannot close '" + temp_path_ + "'");
   }
   // Make the bytes durable before the rename publishes them.
   const int fd = ::open(temp_path_.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0 || ::fsync(fd) != 0) {
     const int why = errno;
     if (fd >= 0) ::close(fd);
-    throw InputError(im.err + "cannot sync '" + temp_path_ + "': " + std::strerror(why));
+    throw InputError(im.err.prefix + "cannot sync '" + temp_path_ + "': " + std::strerror(why));
   }
   ::close(fd);
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
     const int why = errno;
-    throw InputError(im.err + "cannot rename '" + temp_path_ + "': " + std::strerror(why));
+    throw InputError(im.err.prefix + "cannot rename '" + temp_path_ + "': " + std::strerror(why));
   }
   im.keep = true;
   impl_.reset();

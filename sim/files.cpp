@@ -109,6 +109,14 @@ void CheckWritableLocation(const std::string& path) {
   std::remove(probe.c_str());
 }
 
+int ReserveFileSpace(const std::string& path, long long size) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const int status = size > 0 ? ::posix_fallocate(fd, 0, static_cast<off_t>(size)) : 0;
+  ::close(fd);
+  return status;
+}
+
 void WriteFileAtomic(const std::string& path, const std::string& text) {
   const std::string tmp = TempPathFor(path);
   {

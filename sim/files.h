@@ -14,6 +14,11 @@ void WriteFileAtomic(const std::string& path, const std::string& text);
 /// in it (with the system's reason), so long jobs fail before they start rather than at the end.
 void CheckWritableLocation(const std::string& path);
 
+/// Allocates disk space for the first `size` bytes of the existing file `path` (holes
+/// included, contents unchanged), so that later writes within them cannot run out of
+/// space. Returns 0, or the errno value saying why not (ENOSPC: the disk is full).
+int ReserveFileSpace(const std::string& path, long long size);
+
 /// A unique temporary name beside `path` ("path.tmp.<pid>.<n>"). Temporary files of `path`
 /// left by processes that are no longer running are removed first, named in one line on stderr.
 std::string TempPathFor(const std::string& path);

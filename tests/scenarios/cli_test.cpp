@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli_helpers.h"
+#include "small_tmpfs.h"
 #include "sim/simulation.h"
 
 namespace fs = std::filesystem;
@@ -131,6 +132,20 @@ TEST_F(CliTest, FailedRunLeavesNoPartialDatasetAndKeepsTheOldOne) {
   EXPECT_NE(r.err.find("stopped at t = "), std::string::npos) << r.err;
   EXPECT_EQ(Slurp(P("keep.h5")), "previous contents");
   EXPECT_EQ(FileCount(), 1u) << "only keep.h5: no temporary files left";
+}
+
+TEST_F(CliTest, FullDiskGetsOneLineExitCode2AndLeavesNoFile) {
+  // A file system too small for one run's dataset (root only: it is a tmpfs).
+  const testing::SmallTmpfs full(dir_ / "full", "200k");
+  if (!full.mounted()) GTEST_SKIP() << full.reason();
+  const std::string out = (full.dir() / "x.h5").string();
+  const CliResult r = Run("generate rail --runs 1 --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1 --quiet --out " +
+                          out);
+  EXPECT_EQ(r.code, 2) << r.err;  // was a crash at exit (HDF5 closing a file whose close had failed)
+  EXPECT_EQ(Lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("tactip: cannot write dataset '" + out + "': ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(full.dir())) << "no partial or temporary file";
 }
 
 TEST_F(CliTest, ExportMjcfWritesTheCompilableScene) {
