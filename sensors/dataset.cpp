@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "sensors/hdf5_discard.h"
+#include "sensors/run_checks.h"
 #include "sim/config.h"
 #include "sim/files.h"
 
@@ -788,6 +789,7 @@ struct DatasetReader::Impl {
                        std::to_string(tshape[0]) + ", N)");
     }
     run.n_pins = static_cast<int>(vshape[1]);
+    CheckRunTimes(run, Name());
     return run;
   }
 };
@@ -842,8 +844,13 @@ DatasetReader::DatasetReader(const std::string& path) : impl_(std::make_unique<I
     }
     name.resize(static_cast<size_t>(len));
     const int index = ParseRunName(name);
-    if (index >= 0) runs_.push_back(index);
+    if (index < 0) {
+      throw InputError(im.Name() + ": /runs/" + name + " is not a run (runs are named run_NNNN, NNNN from 0000 to " +
+                       std::to_string(std::numeric_limits<int>::max()) + ")");
+    }
+    runs_.push_back(index);
   }
+  if (runs_.empty()) throw InputError(im.Name() + " has no runs (/runs is empty)");
   std::sort(runs_.begin(), runs_.end());
 }
 
@@ -878,6 +885,7 @@ RunRecord DatasetReader::ReadRun(int index) const {
     run.external_px = im.ReadArray<float>(g, name, "external/pos_px", {t, n, 2});
     run.external_m = im.ReadArray<float>(g, name, "external/pos_m", {t, n, 3});
   }
+  CheckRunValues(run, im.Name());
   return run;
 }
 

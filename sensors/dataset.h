@@ -83,7 +83,10 @@ class DatasetWriter {
 };
 
 /// Reads datasets written by DatasetWriter. Throws InputError naming the file and the
-/// problem when it is missing, not HDF5, or lacks a required group/attribute.
+/// problem when it is missing, not HDF5, lacks a required group/attribute, has no runs or
+/// a /runs member not named run_NNNN; and, naming the run and the array, when a run read
+/// has no frames, frame times not finite and strictly increasing, or a non-finite value
+/// (see run_checks.h).
 class DatasetReader {
  public:
   explicit DatasetReader(const std::string& path);
@@ -96,7 +99,7 @@ class DatasetReader {
   const std::vector<int>& run_indices() const { return runs_; }
   /// Reads one run completely.
   RunRecord ReadRun(int index) const;
-  /// Reads only the attributes and the frame count of one run (cheap).
+  /// Reads only the attributes, the frame times and the pin count of one run (cheap).
   RunRecord ReadRunSummary(int index) const;
 
  private:

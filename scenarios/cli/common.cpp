@@ -76,6 +76,9 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
   DatasetReader reader(path);
   const auto& h = reader.header();
   const auto& runs = reader.run_indices();
+  // Every run is read (and checked) before anything is printed.
+  std::vector<RunRecord> summaries;
+  for (int idx : runs) summaries.push_back(reader.ReadRunSummary(idx));
   std::printf("dataset      %s\n", path.c_str());
   std::printf("scenario     %s (tactip %s, seed %llu)\n", h.scenario.c_str(), h.tactip_version.c_str(),
               static_cast<unsigned long long>(h.seed));
@@ -91,8 +94,8 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
   double err_sum = 0.0;
   int err_n = 0;
   std::vector<std::string> flagged;
-  for (int idx : runs) {
-    const RunRecord r = reader.ReadRunSummary(idx);
+  for (const RunRecord& r : summaries) {
+    const int idx = r.index;
     frames += r.frames();
     const double onset = Attr(r, "gross_slip_onset_s");
     const double pred = Attr(r, "predicted_onset_s");

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "sim/config.h"
@@ -281,10 +282,96 @@ TEST_F(DatasetTest, CommitReplacesAnExistingFile) {
   EXPECT_EQ(Entries(), std::vector<std::string>{"x.h5"});  // no temp files left
 }
 
-TEST_F(DatasetTest, EmptyDatasetHasNoRuns) {
+TEST_F(DatasetTest, ADatasetWithoutRunsIsRefused) {
   const std::string path = Path("x.h5");
   WriteDataset(path, {}, MakeHeader());
-  EXPECT_TRUE(DatasetReader(path).run_indices().empty());
+  EXPECT_EQ(InputErrorOf([&] { DatasetReader r(path); }), "dataset '" + path + "' has no runs (/runs is empty)");
+}
+
+TEST_F(DatasetTest, AMemberOfRunsNotNamedRunNNNNIsRefused) {
+  for (const char* name : {"run_99999999999", "run_7", "run_00007", "run_-001", "notes"}) {
+    const std::string path = Path("x.h5");
+    WriteDataset(path, {MakeRun(7, 5, 3), MakeRun(8, 5, 3)}, MakeHeader());
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    ASSERT_GE(H5Lmove(f, "/runs/run_0008", f, (std::string("/runs/") + name).c_str(), H5P_DEFAULT, H5P_DEFAULT), 0);
+    H5Fclose(f);
+    EXPECT_EQ(InputErrorOf([&] { DatasetReader r(path); }),
+              "dataset '" + path + "': /runs/" + name +
+                  " is not a run (runs are named run_NNNN, NNNN from 0000 to 2147483647)");
+  }
+}
+
+/// Overwrites array `rel` of run `run` in the file at `path` with `values` (same size).
+template <class T>
+void Overwrite(const std::string& path, const std::string& rel, hid_t mem_type, const std::vector<T>& values) {
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const hid_t d = H5Dopen2(f, rel.c_str(), H5P_DEFAULT);
+  ASSERT_GE(d, 0);
+  EXPECT_GE(H5Dwrite(d, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+  H5Dclose(d);
+  H5Fclose(f);
+}
+
+TEST_F(DatasetTest, BadFrameTimesAreRefusedNamingTheFileRunAndArray) {
+  const std::string path = Path("x.h5");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::string where = "dataset '" + path + "': run_0002/time ";
+  const struct {
+    std::vector<double> time;
+    std::string problem;
+  } cases[] = {
+      {{0.0, 0.01, nan, 0.03}, "is nan at frame 2 (must be a finite number)"},
+      {{0.0, 0.02, 0.01, 0.03}, "is not increasing: frame 2 at 0.01 s is not after frame 1 at 0.02 s"},
+      {{nan, nan, nan, nan}, "is nan at frame 0 (must be a finite number)"},
+      {{1.0, 1.0, 1.0, 1.0}, "is not increasing: frame 1 at 1 s is not after frame 0 at 1 s"},
+  };
+  for (const auto& c : cases) {
+    WriteDataset(path, {MakeRun(2, 4, 3)}, MakeHeader());
+    Overwrite(path, "/runs/run_0002/time", H5T_NATIVE_DOUBLE, c.time);
+    const DatasetReader reader(path);
+    EXPECT_EQ(InputErrorOf([&] { reader.ReadRunSummary(2); }), where + c.problem);
+    EXPECT_EQ(InputErrorOf([&] { reader.ReadRun(2); }), where + c.problem);
+  }
+}
+
+TEST_F(DatasetTest, ARunWithoutFramesIsRefused) {
+  const std::string path = Path("x.h5");
+  WriteDataset(path, {MakeRun(2, 4, 3)}, MakeHeader());
+  {
+    // time (0) and pins/valid (0, 3): consistent shapes, no frames.
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hsize_t time_shape[1] = {0}, valid_shape[2] = {0, 3};
+    for (const auto& [rel, rank, shape, type] :
+         {std::tuple{"/runs/run_0002/time", 1, time_shape, H5T_IEEE_F64LE},
+          std::tuple{"/runs/run_0002/pins/valid", 2, valid_shape, H5T_STD_U8LE}}) {
+      ASSERT_GE(H5Ldelete(f, rel, H5P_DEFAULT), 0);
+      const hid_t space = H5Screate_simple(rank, shape, nullptr);
+      const hid_t d = H5Dcreate2(f, rel, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      ASSERT_GE(d, 0);
+      H5Dclose(d);
+      H5Sclose(space);
+    }
+    H5Fclose(f);
+  }
+  const DatasetReader reader(path);
+  EXPECT_EQ(InputErrorOf([&] { reader.ReadRunSummary(2); }),
+            "dataset '" + path + "': run_0002/time has no frames (a run needs at least one)");
+}
+
+TEST_F(DatasetTest, NonFinitePinPositionsAreRefusedByReadRun) {
+  const std::string path = Path("x.h5");
+  const float inf = std::numeric_limits<float>::infinity();
+  RunRecord run = MakeRun(2, 4, 3);
+  WriteDataset(path, {run}, MakeHeader());
+  run.pos_px[2 * (3 * 1 + 2) + 1] = inf;  // frame 1, pin 2, v
+  Overwrite(path, "/runs/run_0002/pins/pos_px", H5T_NATIVE_FLOAT, run.pos_px);
+  const DatasetReader reader(path);
+  EXPECT_NO_THROW(reader.ReadRunSummary(2));  // reads no positions
+  EXPECT_EQ(InputErrorOf([&] { reader.ReadRun(2); }),
+            "dataset '" + path + "': run_0002/pins/pos_px is inf at frame 1, pin 2 (must be a finite number)");
 }
 
 TEST_F(DatasetTest, MissingFolderThrowsInputErrorAndLeavesNothing) {

@@ -83,7 +83,7 @@ class DatasetShardTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   std::string Path(const std::string& name) const { return (dir_ / name).string(); }
 
-  /// An empty dataset with `shard` (if any) in its header.
+  /// A one-run dataset with `shard` (if any) in its header.
   void Write(const std::string& path, std::optional<ShardSpec> shard) const {
     DatasetHeader h;
     h.tactip_version = "0.1.0";
@@ -91,7 +91,17 @@ class DatasetShardTest : public ::testing::Test {
     h.seed = 7;
     h.config_yaml = "rail: {}\n";
     h.shard = shard;
+    RunRecord run;  // one frame, one pin
+    run.n_pins = 1;
+    run.time = {0.0};
+    run.pos_px = {1.0f, 2.0f};
+    run.valid = run.gross_slip = run.pin_slip = run.pin_contact = run.incipient = {0};
+    run.pos_m = {0.0f, 0.0f, 0.0f};
+    run.normal_N = {0.0f};
+    run.tangential_N = {0.0f, 0.0f};
+    run.object_height_m = {0.0};
     DatasetWriter w(path, h);
+    w.WriteRun(run);
     w.Commit();
   }
 
