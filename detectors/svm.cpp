@@ -151,7 +151,10 @@ void ValidateLibsvmText(const std::string& text, const std::string& path, int li
   }
   const std::vector<std::string> nsv = r.ExpectKey("nr_sv", 2);
   const int n0 = r.ParseInt(nsv[0], "nr_sv"), n1 = r.ParseInt(nsv[1], "nr_sv");
-  if (n0 < 0 || n1 < 0 || n0 + n1 != total) r.Fail("nr_sv does not add up to total_sv");
+  // n1 == total - n0 rather than n0 + n1 == total: the sum of two ints can overflow.
+  if (n0 < 0 || n1 < 0 || n0 > total || n1 != total - n0) {
+    r.Fail("nr_sv " + nsv[0] + " " + nsv[1] + " does not add up to total_sv " + std::to_string(total));
+  }
   r.ExpectExact("SV");
   std::string problem;
   for (int i = 0; i < total; ++i) {

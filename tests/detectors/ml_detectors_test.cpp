@@ -370,6 +370,11 @@ TEST(SvmDetectorTest, CorruptOrMissingModelFileThrowsNamingThePath) {
       {"truncated", without_last_sv, "file ends early"},
       {"index", Replace(good, " 38:", " 39:"), "outside 1..38"},
       {"trailing", good + "extra\n", "unexpected text after the last support vector"},
+      // Counts whose int sum overflows (undefined behaviour), or that are negative.
+      {"nr_sv overflow", Replace(good, LineStartingWith(good, "nr_sv "), "nr_sv 2147483647 2"),
+       "nr_sv 2147483647 2 does not add up to " + LineStartingWith(good, "total_sv ")},
+      {"nr_sv negative", Replace(good, LineStartingWith(good, "nr_sv "), "nr_sv -1 2"),
+       "nr_sv -1 2 does not add up to " + LineStartingWith(good, "total_sv ")},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
