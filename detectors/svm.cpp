@@ -162,6 +162,12 @@ void ValidateLibsvmText(const std::string& text, const std::string& path, int li
     if (!ParseSvLine(line, dim, problem)) r.Fail(problem);
   }
   if (!r.AtEnd()) r.Fail("unexpected text after the last support vector");
+  // libsvm ends every line with a newline: a file cut inside its last line, which can still
+  // parse (with a shortened last value), lacks it.
+  const size_t last = text.find_last_not_of(" \t\r");
+  if (last == std::string::npos || text[last] != '\n') {
+    r.Fail("the last support vector has no end of line: the file is cut off");
+  }
 }
 
 }  // namespace

@@ -370,6 +370,10 @@ TEST(SvmDetectorTest, CorruptOrMissingModelFileThrowsNamingThePath) {
       {"truncated", without_last_sv, "file ends early"},
       {"index", Replace(good, " 38:", " 39:"), "outside 1..38"},
       {"trailing", good + "extra\n", "unexpected text after the last support vector"},
+      // Cut inside the last line: every prefix still parses, with a shortened last value.
+      {"cut in the last value", good.substr(0, good.size() - 3), "the last support vector has no end of line"},
+      {"cut after an entry", good.substr(0, good.rfind(' ') + 1), "the last support vector has no end of line"},
+      {"no final newline", good.substr(0, good.size() - 1), "the last support vector has no end of line"},
       // Counts whose int sum overflows (undefined behaviour), or that are negative.
       {"nr_sv overflow", Replace(good, LineStartingWith(good, "nr_sv "), "nr_sv 2147483647 2"),
        "nr_sv 2147483647 2 does not add up to " + LineStartingWith(good, "total_sv ")},
