@@ -330,6 +330,14 @@ bool ModelTextReader::AtEnd() const {
   return text_.find_first_not_of(" \t\r\n", pos_) == std::string::npos;
 }
 
+void ModelTextReader::ExpectEndOfFile(std::string_view last) const {
+  if (!AtEnd()) Fail("unexpected text after the last " + std::string(last));
+  const size_t end = text_.find_last_not_of(" \t\r");
+  if (end == std::string::npos || text_[end] != '\n') {
+    Fail("the last " + std::string(last) + " has no end of line: the file is cut off");
+  }
+}
+
 FeatureSet ModelTextReader::ReadFeatures() {
   const std::string name = ExpectKey("features", 1)[0];
   try {

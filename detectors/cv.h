@@ -106,6 +106,10 @@ class ModelTextReader {
   std::string ReadLine(std::string_view expected);
   /// True when only whitespace is left.
   bool AtEnd() const;
+  /// Throws unless only whitespace is left and the text ends with an end of line (as libsvm
+  /// and liblinear end every line): a file cut inside its last line can still parse, with a
+  /// shortened last value. `last` names that line's content, e.g. "support vector".
+  void ExpectEndOfFile(std::string_view last) const;
   /// Throws unless the next line is exactly `line`.
   void ExpectExact(std::string_view line);
   /// Reads the next line, which must start with `key`, and returns its remaining

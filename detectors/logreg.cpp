@@ -100,7 +100,7 @@ void ValidateLiblinearText(const std::string& text, const std::string& path, int
     const std::string token = b == std::string::npos ? "" : line.substr(b, e - b + 1);
     r.ParseDouble(token, "weight");
   }
-  if (!r.AtEnd()) r.Fail("unexpected text after the last weight");
+  r.ExpectEndOfFile("weight");
 }
 
 }  // namespace

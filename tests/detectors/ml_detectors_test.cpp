@@ -406,6 +406,8 @@ TEST(LogRegDetectorTest, CorruptOrMissingModelFileThrowsNamingThePath) {
       {"nr_feature", Replace(good, "nr_feature 38", "nr_feature 37"), "nr_feature 37 differs from dim 38"},
       {"truncated", truncated, "file ends early"},
       {"weight", Replace(good, "\nw\n", "\nw\nx"), "weight 'x"},
+      // Cut inside the last weight: what is left still parses as a (different) number.
+      {"cut in the last weight", good.substr(0, good.find_last_not_of(" \n") - 1), "the last weight has no end of line"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
