@@ -24,16 +24,7 @@ using testing::ReadPngInfo;
 using testing::RunTactip;
 using testing::Slurp;
 
-class AccuracyCliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_accuracy_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  CliResult Run(const std::string& args) { return RunTactip(args, dir_); }
-  fs::path dir_;
-};
+class AccuracyCliTest : public testing::CliFolderTest {};
 
 // A short protocol: fast retraction, short lift.
 const std::string kQuick = " --set rail.retract_speed_mm_s=1 --set rail.lift_mm=10 --runs 1 --quiet";

@@ -2,12 +2,15 @@
 // Running the tactip binary from tests: exit code, stdout and stderr.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace tactip::testing {
 
@@ -40,5 +43,24 @@ inline CliResult RunTactip(const std::string& args, const std::filesystem::path&
   std::filesystem::remove(err);
   return r;
 }
+
+/// A test with its own empty folder (removed afterwards), named after the test, in which
+/// `tactip` runs: Run("args") runs a command there, P("name") names a file in it.
+class CliFolderTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           (std::string("tactip_") + info->test_suite_name() + "_" + std::to_string(::getpid()) + "_" + info->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  CliResult Run(const std::string& args) { return RunTactip(args, dir_); }
+  std::string P(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::filesystem::path dir_;
+};
 
 }  // namespace tactip::testing

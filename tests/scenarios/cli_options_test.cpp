@@ -22,18 +22,8 @@ namespace {
 using testing::CliResult;
 using testing::Slurp;
 
-class CliOptionsTest : public ::testing::Test {
+class CliOptionsTest : public testing::CliFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_cli_options_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
-  std::string P(const std::string& name) const { return (dir_ / name).string(); }
 
   // Runs `args`; expects exit 2, one line on stderr holding every fragment, and no
   // file x.h5 written.
@@ -45,7 +35,6 @@ class CliOptionsTest : public ::testing::Test {
     EXPECT_FALSE(fs::exists(P("x.h5"))) << args;
   }
 
-  fs::path dir_;
 };
 
 // Quick protocol: short lift, fast retraction.

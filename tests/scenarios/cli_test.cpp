@@ -24,17 +24,8 @@ namespace {
 using testing::CliResult;
 using testing::Slurp;
 
-class CliTest : public ::testing::Test {
+class CliTest : public testing::CliFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
   // Files in the test folder other than the ones named.
   size_t FileCount() const {
     size_t n = 0;
@@ -43,7 +34,6 @@ class CliTest : public ::testing::Test {
   }
   std::string P(const std::string& name) const { return (dir_ / name).string(); }
 
-  fs::path dir_;
 };
 
 // Quick protocol: short lift, fast retraction, two runs.

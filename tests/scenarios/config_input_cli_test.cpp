@@ -19,18 +19,8 @@ namespace {
 
 using testing::CliResult;
 
-class ConfigInputCliTest : public ::testing::Test {
+class ConfigInputCliTest : public testing::CliFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_cfg_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
-  std::string P(const std::string& name) const { return (dir_ / name).string(); }
 
   // `generate` with these arguments must be refused on one line naming `fragment`,
   // with exit code 2 and no dataset.
@@ -42,7 +32,6 @@ class ConfigInputCliTest : public ::testing::Test {
     EXPECT_FALSE(fs::exists(P("x.h5"))) << args;
   }
 
-  fs::path dir_;
 };
 
 TEST_F(ConfigInputCliTest, YamlAliasBombDuplicateKeysAndASecondDocumentAreRefused) {

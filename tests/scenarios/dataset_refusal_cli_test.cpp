@@ -24,19 +24,12 @@ namespace {
 
 using testing::CliResult;
 
-class DatasetRefusalCliTest : public ::testing::Test {
+class DatasetRefusalCliTest : public testing::CliFolderTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_dataset_refusal_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    CliFolderTest::SetUp();
     std::ofstream(P("t.model")) << "tactip-detector threshold 1\nthreshold_px 0.5\n";
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
-  std::string P(const std::string& name) const { return (dir_ / name).string(); }
 
   /// Writes a two-run dataset (runs 0 and 1, four frames of two pins) to `path`, then
   /// lets `edit` change the open file.
@@ -77,8 +70,6 @@ class DatasetRefusalCliTest : public ::testing::Test {
     r.text_attrs["stimulus"] = "flat";
     return r;
   }
-
-  fs::path dir_;
 };
 
 /// Overwrites the whole array at `path_in_file` with `values`.

@@ -27,18 +27,8 @@ namespace {
 using testing::CliResult;
 using testing::Slurp;
 
-class ShardCliTest : public ::testing::Test {
+class ShardCliTest : public testing::CliFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_shard_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
-  std::string P(const std::string& name) const { return (dir_ / name).string(); }
   // Names of the files in the test folder.
   std::vector<std::string> Files() const {
     std::vector<std::string> out;
@@ -47,7 +37,6 @@ class ShardCliTest : public ::testing::Test {
     return out;
   }
 
-  fs::path dir_;
 };
 
 // A short protocol (about 0.5 s per run on one core): small lift, fast retraction.

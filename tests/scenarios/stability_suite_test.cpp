@@ -200,18 +200,7 @@ TEST(AutoTimestepTest, ShearDofSkinsGetTheirValidatedStepAndAreRefusedAboveIt) {
 
 // --- the command line ---------------------------------------------------------------------
 
-class StabilityCliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_stability_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  CliResult Run(const std::string& args) { return testing::RunTactip(args, dir_); }
-  fs::path dir_;
-};
+class StabilityCliTest : public testing::CliFolderTest {};
 
 TEST_F(StabilityCliTest, OneHealthyAndOneRefusedCaseWithTheirOutcomes) {
   const CliResult r = Run("stability --case smooth-flat --case gel-x100 --quiet --out " + (dir_ / "out").string());

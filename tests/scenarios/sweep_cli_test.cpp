@@ -22,16 +22,7 @@ using testing::ReadPngInfo;
 using testing::RunTactip;
 using testing::Slurp;
 
-class SweepCliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_sweep_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  CliResult Run(const std::string& args) { return RunTactip(args, dir_); }
-  fs::path dir_;
-};
+class SweepCliTest : public testing::CliFolderTest {};
 
 /// The metrics drawn as heatmaps (`<metric>.png`).
 constexpr const char* kMetrics[] = {"lead_gross_mean_s",    "lead_gross_std_s",     "pre_slip_fraction",
