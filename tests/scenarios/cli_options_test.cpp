@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_helpers.h"
+#include "dead_pid.h"
 
 namespace fs = std::filesystem;
 
@@ -158,14 +159,7 @@ TEST_F(CliOptionsTest, FailedBenchOrSweepLeavesNoFolderItCreated) {
   EXPECT_TRUE(fs::is_directory(P("old")));
 }
 
-// The id of a process that has exited and been reaped: no process has it (until reused).
-pid_t DeadPid() {
-  const pid_t pid = ::fork();
-  if (pid == 0) ::_exit(0);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return pid;
-}
+using testing::DeadPid;
 
 TEST_F(CliOptionsTest, StaleTempFileOfAKilledRunIsRemovedAndNamedOnTheNextRun) {
   const std::string stale = P("x.h5.tmp." + std::to_string(DeadPid()) + ".0");

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "dead_pid.h"
 #include "sim/config.h"
 
 namespace tactip {
@@ -33,14 +34,7 @@ class FilesTest : public ::testing::Test {
   fs::path dir_;
 };
 
-// The id of a process that has exited and been reaped: no process has it (until reused).
-pid_t DeadPid() {
-  const pid_t pid = ::fork();
-  if (pid == 0) ::_exit(0);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return pid;
-}
+using testing::DeadPid;
 
 TEST_F(FilesTest, SameFileSeesThroughLinksAndDotDot) {
   Touch("a.h5");
