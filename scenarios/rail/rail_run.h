@@ -4,6 +4,7 @@
 // Internal to the rail scenario.
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -12,12 +13,15 @@
 
 #include "models/rail_rig.h"
 #include "scenarios/rail/rail_config.h"
+#include "scenarios/rail/rail_controller.h"
 #include "scenarios/rail/rail_scenario.h"
 #include "scenarios/rail/rail_schedule.h"
 #include "scenarios/rail/run_health.h"
 #include "scenarios/rail/state_limits.h"
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
+#include "sensors/friction_law.h"
+#include "sensors/tactile_sensor.h"
 #include "sensors/labels.h"
 #include "sim/random.h"
 #include "sim/simulation.h"
@@ -28,29 +32,45 @@ namespace tactip {
 struct RailSceneIds {
   BuiltScene scene;
   std::optional<CompiledModel> model;
-  int servo_x = -1, servo_z = -1, sensor_body = -1, slider_body = -1, stimulus_geom = -1;
+  int servo_x = -1, servo_z = -1, slider_body = -1, stimulus_geom = -1;
   int slide_dof = -1, arm_z_dof = -1;
-  std::vector<int> pin_site, pin_outer_site, pin_geom;  ///< per pin; -1: no outer site / no contact geom
-  std::vector<int> slot_of_geom;                         ///< geom id -> pin index (or -1)
-  double marker_rock_m_N = 0.0;  ///< inner marker moves by -this * tangential contact force (ridge pivot)
-  double apex_x_m = 0.0;         ///< dome apex in the sensor frame
+  TactileSensorIds sensor;  ///< the TacTip's elements
+  TactileSensorSpec sensor_spec;  ///< its cameras, noise and labelling
 
   /// Compiles the scene of `cfg` (with the parts `options` puts back) and looks its elements
   /// up; throws ModelError.
   RailSceneIds(const RailScenarioConfig& cfg, const SceneOptions& options);
 };
 
-/// The state of one run. Construct, then Execute() once.
+/// The state of one run, advanced step by step: each Step() drives the arm with the
+/// controller's targets, steps the physics, reads the contacts, switches friction, finds
+/// the onsets and, at each camera frame, has the sensor capture a frame, shows it to the
+/// controller and records it. Construct, Step() until it returns false, then Finish().
 class RailRun {
  public:
   /// Draws the run's variations (depth, friction, noise streams) from (seed, index) and
-  /// prepares its own copy of the model.
-  RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int index, std::uint64_t seed);
+  /// prepares its own copy of the model. `controller` drives the arm (null: the offline
+  /// protocol's schedule); it must outlive the run.
+  RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int index, std::uint64_t seed,
+          RailController* controller = nullptr);
 
-  /// Times every step's stages and records the controls into `out` (before Execute).
+  /// Times every step's stages and records the controls into `out` (before the first step).
   void Instrument(RunInstrumentation* out);
-  /// Simulates the whole protocol into `rec`; throws SimulationError or Interrupted.
+  /// Advances one physics step, recording a camera frame into `rec` when one is due;
+  /// returns false (without stepping) once the protocol has ended. Throws SimulationError.
+  bool Step(RunRecord& rec);
+  /// Ends the run: the summary, also written into `rec`'s attributes.
+  RailRunSummary Finish(RunRecord& rec);
+  /// The whole protocol: Step() until the end, then Finish(); throws SimulationError, or
+  /// Interrupted when `*stop` becomes true.
   RailRunSummary Execute(RunRecord& rec, const std::atomic<bool>* stop);
+
+  /// Simulated time (s), the simulation and the sensor (for viewers and controllers).
+  double time() const { return sim_->time(); }
+  const Simulation& simulation() const { return *sim_; }
+  const TactileSensor& sensor() const { return sensor_; }
+  /// The protocol's timeline for this run's press depth.
+  const RailSchedule& schedule() const { return sched_; }
 
  private:
   // This run's draws: press depth and friction coefficient, each on its own stream.
@@ -59,63 +79,47 @@ class RailRun {
     double depth_m, mu;
   };
   static Draws Draw(const RailScenarioConfig& cfg, std::uint64_t run_seed);
-  RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int index, const Draws& draws);
+  RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int index, const Draws& draws,
+          RailController* controller);
 
-  void SetUpFriction(std::uint64_t run_seed);
-  void InitRecord(RunRecord& rec, int index) const;
-  void ReadContactsAndLabel();
-  void UpdateFriction();
+  void InitRecord(RunRecord& rec) const;
+  void ReadContacts();
   void TrackOnset(double t, bool seek_onset);
   void TrackPrediction(double t);
-  void RecordFrame(double t, RunRecord& rec);
-  void RecordPins(RunRecord& rec);
-  void RecordExternal(RunRecord& rec);
-  void RecordContacts(double t, RunRecord& rec);
+  void RecordFrame(double t, double tf, RunRecord& rec);
+  void TrackIncipient(double t);
   void TrackEvents(double t, double tf);
   void TrackHealth(double t);
   void CheckPlausible(double t) const;
-  void RecordControls(double t);
-  void Finish(RunRecord& rec);
+  void RecordControls();
 
   const RailScenarioConfig& c_;
   const RailSceneIds& im_;
   const int index_;             // run number
   const int n_;                 // pins
   const double depth_m_, mu_;   // this run's press depth and static friction
-  DetectionNoise noise_, ext_noise_;
   CompiledModel model_;         // this run's copy (friction changes per pin)
-  std::vector<double> mu_pin_;  // per pin: static coefficient
-  std::vector<double> mu_cur_;  // per pin: coefficient in force
-  std::vector<std::uint8_t> sliding_;  // per pin: kinetic friction in force
+  TactileSensor sensor_;
+  FrictionLaw friction_;
   std::optional<Simulation> sim_;
   const RailSchedule sched_;
+  ScheduleController schedule_controller_;
+  RailController* controller_;  // schedule_controller_ unless given
+  ArmTargets arm_;              // the targets of the last step
   const double dt_, weight_N_;
-  PinholeCamera camera_;
-  const ExternalCamera ext_camera_;
 
-  // Per step: contacts, labels and the holding force.
-  std::vector<GeomContact> contacts_;
-  std::vector<std::array<double, 3>> tangential_;
-  std::vector<PinContactSample> samples_;
-  std::vector<std::uint8_t> pin_contact_, pin_slip_;
-  FrameLabels labels_;
+  // Step and frame counters.
+  long long step_ = 0, frame_ = 0, next_frame_step_ = 0;
+  bool started_ = false;
+
+  // Per step: the holding force and the gross-slip label.
   double holding_N_ = 0.0;  // what the contacts can hold along the rail: sum of mu_s,i N_i + N_i n_i.up
   std::uint8_t gross_ = 0;
-
-  // Per frame: image positions and detections.
-  std::vector<float> px_, prev_px_, ext_px_, prev_ext_px_;
-  std::vector<float> clean_px_;  // this frame's pin image positions before camera noise
-  double image_gain_px_m_ = 0.0; // this frame's largest image motion per metre of pin motion
   bool slipped_since_frame_ = false;  // some pin slipped at a step since the last frame
   double prev_frame_x_ = std::numeric_limits<double>::quiet_NaN();  // the arm's commanded normal position at the last frame
-  std::vector<std::uint8_t> valid_, ext_valid_;
-  std::array<double, 3> origin_{};
-  std::array<double, 9> rot_{};
 
   // Per frame: is the state physically possible (StateLimits)?
   const StateLimits limits_;
-  std::vector<std::array<double, 3>> rest_marker_m_;  // per pin: its marker at rest, sensor frame
-  std::vector<double> marker_shift_m_, normal_N_;      // per pin, this frame
 
   RunInstrumentation* instrument_ = nullptr;
 
@@ -127,6 +131,7 @@ class RailRun {
   double prev_margin_, prev_skin_, prev_t_ = 0.0;
   double rel_ref_, lift_rel_ref_, creep_ref_, creep_max_ = 0.0;
   bool ending_ = false, left_behind_ = false;
+  std::chrono::steady_clock::time_point wall0_;
 };
 
 }  // namespace tactip

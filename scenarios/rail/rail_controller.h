@@ -1,0 +1,59 @@
+#pragma once
+// What drives the arm of a rail run. At every step the run asks its controller for the
+// servo targets; at every camera frame it shows the controller what each tactile sensor's
+// camera delivered. The offline protocol (press, lift, hold, retract) is the controller
+// that follows RailSchedule and ignores the frames; closed-loop protocols (catch, stop)
+// run a detector on the frames and change the targets.
+
+#include <string>
+#include <vector>
+
+#include "detectors/pin_frame.h"
+#include "scenarios/rail/rail_schedule.h"
+
+namespace tactip {
+
+/// The arm's servo targets (m): x along the stimulus normal (towards it) from the start
+/// pose, z up.
+struct ArmTargets {
+  double x_m = 0.0;
+  double z_m = 0.0;
+};
+
+/// What a controller sees at one camera frame.
+struct FrameInput {
+  double time_s = 0.0;                   ///< frame time (s)
+  std::vector<const PinFrame*> frames;   ///< one per tactile sensor, in scene order
+};
+
+/// One thing a controller did, for the dataset's actions/ group.
+struct ControllerAction {
+  double time_s = 0.0;  ///< when (s)
+  std::string what;     ///< e.g. "slip_declared", "catch", "stop"
+};
+
+/// Drives the arm of one rail run. One instance per run.
+class RailController {
+ public:
+  virtual ~RailController() = default;
+  /// The servo targets at simulated time t (asked at every step).
+  virtual ArmTargets Targets(double t) = 0;
+  /// Called at each camera frame once every sensor has captured it.
+  virtual void OnFrame(const FrameInput& input) {}
+  /// True when the controller's trial is over and the run may end at time t.
+  virtual bool Done(double t) const { return false; }
+  /// What the controller did so far.
+  virtual std::vector<ControllerAction> Actions() const { return {}; }
+};
+
+/// The offline protocol: RailSchedule's timeline, frames ignored.
+class ScheduleController : public RailController {
+ public:
+  explicit ScheduleController(const RailSchedule& schedule) : schedule_(schedule) {}
+  ArmTargets Targets(double t) override { return {schedule_.X(t), schedule_.Z(t)}; }
+
+ private:
+  const RailSchedule schedule_;
+};
+
+}  // namespace tactip

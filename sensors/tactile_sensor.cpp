@@ -1,0 +1,184 @@
+#include "sensors/tactile_sensor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/skin.h"
+
+namespace tactip {
+
+namespace {
+
+double Dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// The external camera's noise: the configured pixel noise, no dropouts.
+CameraConfig ExternalNoise(const ExternalCameraConfig& e) {
+  CameraConfig c;
+  c.pixel_noise_px = e.pixel_noise_px;
+  c.dropout_prob = 0.0;
+  return c;
+}
+
+// Largest image motion per metre of motion of point `p` (sensor frame): the Frobenius norm
+// of the projection's Jacobian, by central differences (it bounds every direction's gain).
+double ImageGain(const PinholeCamera& camera, const std::array<double, 3>& p) {
+  constexpr double h = 1e-5;
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    auto a = p, b = p;
+    a[k] += h;
+    b[k] -= h;
+    const auto ua = camera.Project(a), ub = camera.Project(b);
+    sum += (ua[0] - ub[0]) * (ua[0] - ub[0]) + (ua[1] - ub[1]) * (ua[1] - ub[1]);
+  }
+  return std::sqrt(sum) / (2.0 * h);
+}
+
+}  // namespace
+
+TactileSensorIds TactileSensorIds::Find(const CompiledModel& m, const std::string& body_name, int n_pins,
+                                        const std::vector<bool>& outer) {
+  TactileSensorIds ids;
+  ids.body = m.BodyId(body_name);
+  ids.slot_of_geom.assign(m.ngeom(), -1);
+  for (int i = 0; i < n_pins; ++i) {
+    ids.pin_site.push_back(m.SiteId(SkinNames::PinSite(i)));
+    ids.pin_outer_site.push_back(outer[i] ? m.SiteId(SkinNames::PinOuterSite(i)) : -1);
+    int g = -1;
+    try {
+      g = m.GeomId(SkinNames::PinGeom(i));
+    } catch (const ModelError&) {
+      g = -1;  // culled: this pin cannot touch the stimulus
+    }
+    ids.pin_geom.push_back(g);
+    if (g >= 0) ids.slot_of_geom[g] = i;
+  }
+  return ids;
+}
+
+TactileSensor::TactileSensor(const TactileSensorSpec& spec, const TactileSensorIds& ids, std::uint64_t noise_seed,
+                             std::uint64_t external_seed)
+    : spec_(spec),
+      ids_(ids),
+      n_(static_cast<int>(ids.pin_site.size())),
+      camera_(spec.camera),
+      ext_camera_(spec.external, spec.apex_x_m),
+      noise_(spec.camera, noise_seed),
+      ext_noise_(ExternalNoise(spec.external), external_seed),
+      contacts_(n_),
+      tangential_(n_),
+      samples_(n_),
+      pin_contact_(n_),
+      pin_slip_(n_),
+      px_(2 * n_),
+      ext_px_(2 * n_),
+      clean_px_(2 * n_),
+      valid_(n_),
+      ext_valid_(n_),
+      marker_shift_m_(n_),
+      normal_N_(n_) {}
+
+void TactileSensor::Rest(const Simulation& sim) {
+  pose_ = {sim.BodyPos(ids_.body), sim.BodyRot(ids_.body)};
+  rest_marker_m_.clear();
+  for (int i = 0; i < n_; ++i) rest_marker_m_.push_back(pose_.Point(sim.SitePos(ids_.pin_site[i])));
+}
+
+void TactileSensor::ReadContacts(Simulation& sim) {
+  sim.ReadContacts(ids_.slot_of_geom, contacts_);
+  for (int i = 0; i < n_; ++i) {
+    const GeomContact& gc = contacts_[i];
+    const double fn = Dot(gc.force_world, gc.normal_world);
+    for (int k = 0; k < 3; ++k) tangential_[i][k] = gc.force_world[k] - fn * gc.normal_world[k];
+    // On the cone as the friction rows hold it (see GeomContact::cone_use).
+    samples_[i] = {gc.in_contact, gc.slip_speed_m_s, gc.in_contact ? gc.cone_use : 0.0};
+  }
+  labels_ = LabelFrame(samples_, spec_.labels, pin_contact_.data(), pin_slip_.data());
+}
+
+const PinFrame& TactileSensor::Capture(const Simulation& sim, double time_s, RunRecord& rec) {
+  pose_ = {sim.BodyPos(ids_.body), sim.BodyRot(ids_.body)};
+  CapturePins(sim, rec);
+  if (spec_.external.enabled) CaptureExternal(sim, rec);
+  CaptureContacts(rec);
+  FillFrame(time_s);
+  return frame_;
+}
+
+void TactileSensor::CapturePins(const Simulation& sim, RunRecord& rec) {
+  // Pin inner ends in the sensor frame, and their image positions. A fingerprint ridge
+  // rocks under its tangential contact force (quasi-statically, deflection f_t / k_rock at
+  // the contact point), which moves the inner marker the other way.
+  image_gain_px_m_ = 0.0;
+  for (int i = 0; i < n_; ++i) {
+    auto p = pose_.Point(sim.SitePos(ids_.pin_site[i]));
+    marker_shift_m_[i] = std::sqrt((p[0] - rest_marker_m_[i][0]) * (p[0] - rest_marker_m_[i][0]) +
+                                   (p[1] - rest_marker_m_[i][1]) * (p[1] - rest_marker_m_[i][1]) +
+                                   (p[2] - rest_marker_m_[i][2]) * (p[2] - rest_marker_m_[i][2]));
+    if (spec_.marker_rock_m_N > 0.0) {
+      const auto fs = pose_.Vector(tangential_[i]);
+      for (int k = 0; k < 3; ++k) p[k] -= spec_.marker_rock_m_N * fs[k];
+    }
+    for (int k = 0; k < 3; ++k) rec.pos_m.push_back(static_cast<float>(p[k]));
+    image_gain_px_m_ = std::max(image_gain_px_m_, ImageGain(camera_, p));
+    const auto uv = camera_.Project(p);
+    px_[2 * i] = static_cast<float>(uv[0]);
+    px_[2 * i + 1] = static_cast<float>(uv[1]);
+  }
+  // What the tracker reports: noise and dropouts on the clean positions.
+  clean_px_ = px_;
+  noise_.Apply(px_, valid_, prev_px_);
+  prev_px_ = px_;
+  rec.pos_px.insert(rec.pos_px.end(), px_.begin(), px_.end());
+  rec.valid.insert(rec.valid.end(), valid_.begin(), valid_.end());
+}
+
+void TactileSensor::CaptureExternal(const Simulation& sim, RunRecord& rec) {
+  // External markers: the outer contact points, seen through the plate.
+  for (int i = 0; i < n_; ++i) {
+    const auto q = pose_.Point(sim.SitePos(ids_.pin_outer_site[i]));
+    for (int k = 0; k < 3; ++k) rec.external_m.push_back(static_cast<float>(q[k]));
+    const auto uv = ext_camera_.Project(q);
+    ext_px_[2 * i] = static_cast<float>(uv[0]);
+    ext_px_[2 * i + 1] = static_cast<float>(uv[1]);
+  }
+  ext_noise_.Apply(ext_px_, ext_valid_, prev_ext_px_);
+  prev_ext_px_ = ext_px_;
+  rec.external_px.insert(rec.external_px.end(), ext_px_.begin(), ext_px_.end());
+}
+
+void TactileSensor::CaptureContacts(RunRecord& rec) {
+  // Contact forces (tangential in sensor y, z) and the stick/slip labels.
+  for (int i = 0; i < n_; ++i) {
+    normal_N_[i] = contacts_[i].normal_N;
+    rec.normal_N.push_back(static_cast<float>(contacts_[i].normal_N));
+    const auto fts = pose_.Vector(tangential_[i]);
+    rec.tangential_N.push_back(static_cast<float>(fts[1]));
+    rec.tangential_N.push_back(static_cast<float>(fts[2]));
+  }
+  rec.pin_contact.insert(rec.pin_contact.end(), pin_contact_.begin(), pin_contact_.end());
+  rec.pin_slip.insert(rec.pin_slip.end(), pin_slip_.begin(), pin_slip_.end());
+  // Partial slip: some contacting pins slide while others stick.
+  rec.incipient.push_back(labels_.n_slip > 0 && labels_.n_slip < labels_.n_contact ? 1 : 0);
+}
+
+void TactileSensor::FillFrame(double time_s) {
+  // The frame as hardware delivers it: reported positions, detections, external markers.
+  frame_.time_s = time_s;
+  frame_.pos_px.resize(n_, 2);
+  frame_.valid.assign(valid_.begin(), valid_.end());
+  for (int i = 0; i < n_; ++i) {
+    frame_.pos_px(i, 0) = px_[2 * i];
+    frame_.pos_px(i, 1) = px_[2 * i + 1];
+  }
+  if (!spec_.external.enabled) return;
+  frame_.external_px.resize(n_, 2);
+  for (int i = 0; i < n_; ++i) {
+    frame_.external_px(i, 0) = ext_px_[2 * i];
+    frame_.external_px(i, 1) = ext_px_[2 * i + 1];
+  }
+}
+
+}  // namespace tactip

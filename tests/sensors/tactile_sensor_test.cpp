@@ -1,0 +1,169 @@
+#include "sensors/tactile_sensor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "models/rail_rig.h"
+#include "sensors/friction_law.h"
+
+namespace tactip {
+namespace {
+
+// The rail scene with the default TacTip, compiled; the pins that can reach a 3 mm press
+// carry contact geoms.
+struct RailModel {
+  RailSceneSpec spec;
+  BuiltScene scene;
+  CompiledModel model;
+  TactileSensorIds ids;
+
+  RailModel() : spec(Spec()), scene(BuildRailScene(spec)), model(CompiledModel::FromXml(scene.xml)) {
+    ids = TactileSensorIds::Find(model, RailNames::kSensor, scene.n_pins,
+                                 RailOuterSitePins(spec, static_cast<size_t>(scene.n_pins)));
+  }
+  static RailSceneSpec Spec() {
+    RailSceneSpec s;
+    s.max_depth_m = 3e-3;
+    return s;
+  }
+};
+
+TactileSensorSpec NoiseFree() {
+  TactileSensorSpec spec;
+  spec.camera.pixel_noise_px = 0.0;
+  spec.camera.dropout_prob = 0.0;
+  return spec;
+}
+
+TEST(TactileSensorTest, FindsEveryPinAndCullsThoseThatCannotTouch) {
+  const RailModel rail;
+  ASSERT_EQ(static_cast<int>(rail.ids.pin_site.size()), rail.scene.n_pins);
+  int with_geom = 0;
+  for (int i = 0; i < rail.scene.n_pins; ++i) {
+    if (rail.ids.pin_geom[i] < 0) continue;
+    ++with_geom;
+    EXPECT_EQ(rail.ids.slot_of_geom[rail.ids.pin_geom[i]], i);
+  }
+  EXPECT_EQ(with_geom, rail.scene.n_collidable);
+  EXPECT_LT(with_geom, rail.scene.n_pins);  // the rim cannot reach a 3 mm press
+}
+
+TEST(TactileSensorTest, AtRestNothingTouchesAndTheNoiseFreeFrameIsTheProjection) {
+  const RailModel rail;
+  Simulation sim(rail.model);
+  sim.Forward();
+  TactileSensor sensor(NoiseFree(), rail.ids, 1, 2);
+  sensor.Rest(sim);
+  sensor.ReadContacts(sim);
+  EXPECT_EQ(sensor.labels().n_contact, 0);
+  RunRecord rec;
+  const PinFrame& frame = sensor.Capture(sim, 0.25, rec);
+  ASSERT_EQ(frame.size(), rail.scene.n_pins);
+  EXPECT_EQ(frame.time_s, 0.25);
+  // The camera looks along the dome axis: the centre pin at the principal point, every pin
+  // inside the image, all detected; the record got one frame of every per-pin array.
+  const CameraConfig& cam = NoiseFree().camera;
+  EXPECT_NEAR(frame.pos_px(0, 0), cam.cx_px, 1e-3);
+  EXPECT_NEAR(frame.pos_px(0, 1), cam.cy_px, 1e-3);
+  for (int i = 0; i < frame.size(); ++i) {
+    EXPECT_EQ(frame.valid[i], 1);
+    EXPECT_GT(frame.pos_px(i, 0), 0.0);
+    EXPECT_LT(frame.pos_px(i, 0), cam.width_px);
+  }
+  const size_t n = static_cast<size_t>(rail.scene.n_pins);
+  EXPECT_EQ(rec.pos_px.size(), 2 * n);
+  EXPECT_EQ(rec.pos_m.size(), 3 * n);
+  EXPECT_EQ(rec.pin_contact.size(), n);
+  EXPECT_EQ(rec.incipient.size(), 1u);
+  EXPECT_TRUE(rec.external_px.empty());  // no external camera unless enabled
+  for (double s : sensor.marker_shift_m()) EXPECT_EQ(s, 0.0);
+}
+
+TEST(TactileSensorTest, CameraNoiseMovesTheReportedButNotTheCleanPositions) {
+  const RailModel rail;
+  Simulation sim(rail.model);
+  sim.Forward();
+  TactileSensorSpec noisy = NoiseFree();
+  noisy.camera.pixel_noise_px = 0.5;
+  TactileSensor sensor(noisy, rail.ids, 1, 2);
+  sensor.Rest(sim);
+  sensor.ReadContacts(sim);
+  RunRecord rec;
+  const PinFrame& frame = sensor.Capture(sim, 0.0, rec);
+  double sum_sq = 0.0;
+  for (int i = 0; i < frame.size(); ++i) {
+    for (int k = 0; k < 2; ++k) {
+      const double d = frame.pos_px(i, k) - sensor.clean_px()[2 * i + k];
+      sum_sq += d * d;
+    }
+  }
+  const double rms = std::sqrt(sum_sq / (2.0 * frame.size()));
+  EXPECT_GT(rms, 0.3);
+  EXPECT_LT(rms, 0.7);
+}
+
+TEST(FrictionLawTest, SlidingPinDropsToKineticAndSticksBack) {
+  RailModel rail;
+  ContactConfig contact;
+  contact.kinetic_ratio = 0.6;
+  contact.pin_friction_spread = 0.0;
+  const LabelConfig labels;
+  FrictionLaw law(contact, labels, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7, rail.model);
+  int pin = 0;
+  while (rail.ids.pin_geom[pin] < 0) ++pin;
+  const int geom = rail.ids.pin_geom[pin];
+  EXPECT_DOUBLE_EQ(rail.model.GeomFriction(geom), 1.0);
+  EXPECT_DOUBLE_EQ(rail.model.GeomFriction(rail.model.GeomId(RailNames::kStimulus)), 0.6);
+  const size_t n = rail.ids.pin_geom.size();
+  std::vector<PinContactSample> samples(n, PinContactSample{true, 0.0, 0.5});
+  std::vector<std::uint8_t> slip(n, 0);
+  slip[pin] = 1;
+  samples[pin].slip_speed_m_s = 1e-3;
+  law.Update(samples, slip, rail.model);
+  EXPECT_DOUBLE_EQ(rail.model.GeomFriction(geom), 0.6);
+  // Still sliding above the slip tolerance after its label clears: stays kinetic.
+  slip[pin] = 0;
+  law.Update(samples, slip, rail.model);
+  EXPECT_DOUBLE_EQ(rail.model.GeomFriction(geom), 0.6);
+  // Stuck again: static.
+  samples[pin].slip_speed_m_s = 0.0;
+  law.Update(samples, slip, rail.model);
+  EXPECT_DOUBLE_EQ(rail.model.GeomFriction(geom), 1.0);
+}
+
+TEST(FrictionLawTest, VelocityWeakeningIsHalfwayAtTheWeakeningSpeed) {
+  RailModel rail;
+  ContactConfig contact;
+  contact.kinetic_ratio = 0.6;
+  contact.weakening_speed_mm_s = 1.0;
+  FrictionLaw law(contact, LabelConfig{}, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7,
+                  rail.model);
+  const size_t n = rail.ids.pin_geom.size();
+  std::vector<PinContactSample> samples(n, PinContactSample{true, 1e-3, 1.0});
+  law.Update(samples, std::vector<std::uint8_t>(n, 1), rail.model);
+  int pin = 0;
+  while (rail.ids.pin_geom[pin] < 0) ++pin;
+  EXPECT_NEAR(rail.model.GeomFriction(rail.ids.pin_geom[pin]), 0.8, 1e-12);
+}
+
+TEST(FrictionLawTest, PerPinSpreadStaysInItsBandAndTheStimulusBelowEveryKineticValue) {
+  RailModel rail;
+  ContactConfig contact;
+  contact.kinetic_ratio = 0.6;
+  contact.pin_friction_spread = 0.2;
+  FrictionLaw law(contact, LabelConfig{}, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7,
+                  rail.model);
+  double lo = 10.0, hi = 0.0;
+  for (double mu : law.static_mu()) {
+    lo = std::min(lo, mu);
+    hi = std::max(hi, mu);
+  }
+  EXPECT_GE(lo, 0.8);
+  EXPECT_LE(hi, 1.2);
+  EXPECT_GT(hi - lo, 0.1);  // 127 draws spread over the band
+  EXPECT_NEAR(rail.model.GeomFriction(rail.model.GeomId(RailNames::kStimulus)), 0.48, 1e-12);
+}
+
+}  // namespace
+}  // namespace tactip
