@@ -46,6 +46,7 @@ TEST(SimulationTest, ContactBufferOverflowIsReported) {
   }
   xml += "</worldbody></mujoco>";
   const auto m = CompiledModel::FromXml(xml);
+  const int hook_before = MujocoWarningsRaised();
   Simulation sim(m);
   try {
     for (int i = 0; i < 100; ++i) sim.Step();
@@ -53,6 +54,9 @@ TEST(SimulationTest, ContactBufferOverflowIsReported) {
   } catch (const SimulationError& e) {
     EXPECT_NE(std::string(e.what()).find("CONTACTFULL"), std::string::npos) << e.what();
   }
+  // MuJoCo counts each of the eight dropped contacts and sends only the first to its hook.
+  EXPECT_EQ(sim.WarningCount(), 8);
+  EXPECT_EQ(MujocoWarningsRaised() - hook_before, 1);
 }
 
 // Semi-implicit Euler with implicit damping is stable for omega*dt below
