@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -149,6 +150,8 @@ TEST_F(SkinTest, CulledPinsReallyCannotTouch) {
   const PinLattice lat = PinLattice::Build(skin);
   const double depth = 3e-3;
   const auto coll = RailCollidablePins(skin, lat, rail, depth);
+  ASSERT_LT(std::count(coll.begin(), coll.end(), true), static_cast<long>(lat.size()))
+      << "premise: some pins are culled";
   for (const auto& p : lat.pins) {
     const double sag = skin.radius_mm * 1e-3 * (1.0 - p.normal[0]);  // apex-to-pin drop along the axis
     if (!coll[p.index]) {
