@@ -3,6 +3,7 @@
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,9 +19,12 @@ static_assert(mjNWARNING == 8, "warning table size");
 
 namespace {
 
+// Messages MuJoCo sent to its warning hook in this process (see MujocoWarningsRaised).
+std::atomic<int> g_warnings_raised{0};
+
 // MuJoCo's default warning handler prints to stdout and appends to MUJOCO_LOG.TXT; the
-// counters in mjData are checked after every step instead.
-void SilentWarning(const char*) {}
+// counters in mjData are checked after every step instead. The hook only counts.
+void SilentWarning(const char*) { g_warnings_raised.fetch_add(1, std::memory_order_relaxed); }
 
 // MuJoCo's errors are fatal to the process; say so on one line and exit non-zero.
 void FatalError(const char* msg) {
@@ -62,6 +66,11 @@ const char* WarningName(int i) {
 }
 
 }  // namespace
+
+int MujocoWarningsRaised() {
+  InstallHandlers();
+  return g_warnings_raised.load(std::memory_order_relaxed);
+}
 
 void MjModelDeleter::operator()(mjModel_* m) const { mj_deleteModel(m); }
 void MjDataDeleter::operator()(mjData_* d) const { mj_deleteData(d); }

@@ -32,6 +32,12 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Warnings MuJoCo has sent to its warning hook in this process so far: from any model or
+/// mjData, stepped by a Simulation or not. MuJoCo 2.2.2 sends a kind of warning only the
+/// first time it occurs in an mjData (Simulation::WarningCount counts every occurrence).
+/// For tests: work that raised no warning leaves it unchanged. Installs tactip's handlers.
+int MujocoWarningsRaised();
+
 /// Deleters so MuJoCo structs live in std::unique_ptr.
 struct MjModelDeleter {
   void operator()(mjModel_* m) const;

@@ -1,11 +1,14 @@
-// Offline evaluation on hand-built runs with scripted decisions: every count is known.
+// Offline evaluation on hand-built runs with scripted decisions (every count is known), and
+// the timing of decisions that take a known least time.
 
 #include "detectors/metrics.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -112,9 +115,34 @@ TEST(EvaluateTest, HandBuiltRunsGiveExactCountsDelayAndFalsePositiveRate) {
   EXPECT_NEAR(ev.detected_fraction, 0.5, kTol);
   // Static data: 10/100 + 10/50 + 5/100 s = 0.35 s; 3 false positives.
   EXPECT_NEAR(ev.fp_per_min, 3.0 / (0.35 / 60.0), 1e-9);
-  EXPECT_GE(ev.us_per_frame_mean, 0.0);
-  EXPECT_GE(ev.us_per_frame_p99, 0.0);
-  EXPECT_TRUE(std::isfinite(ev.us_per_frame_p99));
+}
+
+/// Takes at least 1 ms over every decision, and 20 ms more over the one in frame `slow_frame`.
+class SlowDetector : public Detector {
+ public:
+  explicit SlowDetector(int slow_frame) : slow_frame_(slow_frame) {}
+  std::string name() const override { return "slow"; }
+  void Reset() override { frame_ = 0; }
+  Decision Update(const PinFrame&) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(frame_ == slow_frame_ ? 21 : 1));
+    ++frame_;
+    return Decision{};
+  }
+  void Save(const std::string&) const override {}
+
+ private:
+  int slow_frame_;
+  int frame_ = 0;
+};
+
+TEST(EvaluateTest, TimingIsTheWallTimeOfEachDecisionInMicroseconds) {
+  // 50 decisions of >= 1 ms, one of them >= 21 ms: the mean is >= 1.4 ms, and the 99th
+  // percentile (nearest rank: the 50th smallest of 50) is the slow one.
+  const std::vector<LabeledRun> runs = {MakeRun(0, 50, 0, 30, 100.0)};
+  SlowDetector det(17);
+  const Evaluation ev = Evaluate(det, runs, 4);
+  EXPECT_GE(ev.us_per_frame_mean, 1400.0);
+  EXPECT_GE(ev.us_per_frame_p99, 21000.0);
 }
 
 TEST(EvaluateTest, DetectionIsSearchedToTheEndOfTheRun) {

@@ -241,9 +241,18 @@ TEST(SvmDetectorTest, RbfReachesHighF1OnHeldOutRuns) {
   const CvReport& cv = det->cv_report();
   EXPECT_EQ(cv.grid.size(), Options().c_grid.size() * Options().gamma_scale_grid.size());
   EXPECT_EQ(det->dim(), 2 * kPins);
-  EXPECT_EQ(det->gamma(), cv.best_gamma);
-  EXPECT_EQ(det->c(), cv.best_c);
-  EXPECT_GE(cv.best_f1, kMinF1);
+  std::set<double> gammas, scaled;
+  for (const auto& candidate : cv.grid) gammas.insert(std::get<1>(candidate));
+  for (double g : Options().gamma_scale_grid) scaled.insert(g / det->dim());
+  EXPECT_EQ(gammas, scaled);
+  // The model is refitted with the first candidate of the highest out-of-fold F1.
+  size_t best = 0;
+  for (size_t i = 1; i < cv.grid.size(); ++i) {
+    if (std::get<2>(cv.grid[i]) > std::get<2>(cv.grid[best])) best = i;
+  }
+  EXPECT_EQ(det->c(), std::get<0>(cv.grid[best]));
+  EXPECT_EQ(det->gamma(), std::get<1>(cv.grid[best]));
+  EXPECT_GE(std::get<2>(cv.grid[best]), kMinF1);
   EXPECT_GT(det->n_support_vectors(), 0);
 }
 

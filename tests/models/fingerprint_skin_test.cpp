@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "mujoco_warning_guard.h"
 #include "models/rail_rig.h"
 #include "models/skin.h"
 #include "sim/sim_config.h"
@@ -285,9 +286,12 @@ std::map<int, const mjcf::Element*> PinBodies(const SkinPart& part) {
   return out;
 }
 
+// Compiling a scene runs MuJoCo (its setup pass on a scratch mjData): no warning allowed.
+class FingerprintSkinPartTest : public testing::MujocoWarningGuard {};
+
 // Every pin of a membrane lattice shears on the gel (the skin beyond the contact is
 // dragged along by the membrane); only pins that can touch the plate move normally.
-TEST(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormalDofsToCollidablePins) {
+TEST_F(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormalDofsToCollidablePins) {
   const SkinConfig v2 = PresetSkin("fingerprint-v2");
   const PinLattice lat = PinLattice::Build(v2);
   RailConfig rail;
@@ -352,7 +356,7 @@ TEST(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormalDo
   EXPECT_EQ(bend, live_edges);
 }
 
-TEST(FingerprintSkinPartTest, ShellCouplingKeepsDofsOnEveryPinAndHasNoMembraneSprings) {
+TEST_F(FingerprintSkinPartTest, ShellCouplingKeepsDofsOnEveryPinAndHasNoMembraneSprings) {
   SkinConfig v2 = PresetSkin("fingerprint-v2");
   v2.coupling = "shell";
   const PinLattice lat = PinLattice::Build(v2);
@@ -367,7 +371,7 @@ TEST(FingerprintSkinPartTest, ShellCouplingKeepsDofsOnEveryPinAndHasNoMembraneSp
   for (const auto& t : part.tendons) EXPECT_EQ(t.Get("name").rfind("membrane_", 0), std::string::npos);
 }
 
-TEST(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithAFullShearLatticeAndNormalDofsPerCollidablePin) {
+TEST_F(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithAFullShearLatticeAndNormalDofsPerCollidablePin) {
   for (const char* name : {"fingerprint-v1", "fingerprint-v2"}) {
     SCOPED_TRACE(name);
     RailSceneSpec spec;

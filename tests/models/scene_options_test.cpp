@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "mujoco_warning_guard.h"
 #include "models/rail_rig.h"
 #include "sim/model_counts.h"
 #include "sim/simulation.h"
@@ -30,7 +31,10 @@ Built Build(const std::string& stimulus, const SceneOptions& options, bool exter
   return b;
 }
 
-TEST(SceneOptionsTest, TheLeanSceneHasOnlyWhatItsRunsNeed) {
+// Every test compiles scenes, which runs MuJoCo (its setup pass on a scratch mjData): no warning allowed.
+class SceneOptionsTest : public testing::MujocoWarningGuard {};
+
+TEST_F(SceneOptionsTest, TheLeanSceneHasOnlyWhatItsRunsNeed) {
   for (const char* stimulus : {"flat", "curved40"}) {
     SCOPED_TRACE(stimulus);
     const Built lean = Build(stimulus, SceneOptions{});
@@ -45,7 +49,7 @@ TEST(SceneOptionsTest, TheLeanSceneHasOnlyWhatItsRunsNeed) {
   }
 }
 
-TEST(SceneOptionsTest, AllPinsCollidePutsAContactGeomOnEveryPin) {
+TEST_F(SceneOptionsTest, AllPinsCollidePutsAContactGeomOnEveryPin) {
   const Built lean = Build("flat", SceneOptions{});
   SceneOptions o;
   o.all_pins_collide = true;
@@ -58,7 +62,7 @@ TEST(SceneOptionsTest, AllPinsCollidePutsAContactGeomOnEveryPin) {
   EXPECT_EQ(all.counts.nsite, lean.counts.nsite);
 }
 
-TEST(SceneOptionsTest, VisualGeomsAddTheBeamHousingPlateAndLightButNoContact) {
+TEST_F(SceneOptionsTest, VisualGeomsAddTheBeamHousingPlateAndLightButNoContact) {
   SceneOptions o;
   o.visual_geoms = true;
   for (const char* stimulus : {"flat", "curved40"}) {
@@ -75,7 +79,7 @@ TEST(SceneOptionsTest, VisualGeomsAddTheBeamHousingPlateAndLightButNoContact) {
   }
 }
 
-TEST(SceneOptionsTest, OuterSitesOnEveryPinWithTheExternalCameraOrWhenAsked) {
+TEST_F(SceneOptionsTest, OuterSitesOnEveryPinWithTheExternalCameraOrWhenAsked) {
   const Built lean = Build("acrylic", SceneOptions{});
   SceneOptions o;
   o.outer_sites = true;
@@ -91,7 +95,7 @@ TEST(SceneOptionsTest, OuterSitesOnEveryPinWithTheExternalCameraOrWhenAsked) {
   EXPECT_THROW(m.SiteId(SkinNames::PinOuterSite(1)), ModelError);
 }
 
-TEST(SceneOptionsTest, AFreeObjectHasSixDofsWhereTheRailHasOne) {
+TEST_F(SceneOptionsTest, AFreeObjectHasSixDofsWhereTheRailHasOne) {
   const Built lean = Build("curved40", SceneOptions{});
   SceneOptions o;
   o.object_free_joint = true;

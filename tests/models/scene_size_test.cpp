@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "mujoco_warning_guard.h"
 #include "models/scene_size.h"
 #include "sim/model_counts.h"
 #include "sim/simulation.h"
@@ -22,7 +23,10 @@ RailSceneSpec Spec(const std::string& coupling, const std::string& pattern, cons
   return spec;
 }
 
-TEST(SceneSizeTest, EstimateEqualsTheCompiledScene) {
+// Compiling a scene runs MuJoCo (its setup pass on a scratch mjData): no warning allowed.
+class SceneSizeTest : public testing::MujocoWarningGuard {};
+
+TEST_F(SceneSizeTest, EstimateEqualsTheCompiledScene) {
   const RailSceneSpec specs[] = {Spec("shell", "smooth", "flat"), Spec("membrane", "fingerprint-v2", "acrylic"),
                                  Spec("none", "smooth", "curved40"), Spec("membrane", "fingerprint-v1", "curved20")};
   for (RailSceneSpec spec : specs) {
@@ -46,7 +50,7 @@ TEST(SceneSizeTest, EstimateEqualsTheCompiledScene) {
   }
 }
 
-TEST(SceneSizeTest, AFingerprintSkinWithThousandsOfPinsDoesNotFit) {
+TEST_F(SceneSizeTest, AFingerprintSkinWithThousandsOfPinsDoesNotFit) {
   // 24 pins per ring on 1 mm rings out to 18 mm: 4105 pins (MuJoCo cannot create its data).
   RailSceneSpec spec = Spec("membrane", "fingerprint-v2", "acrylic");
   spec.skin.pins_per_ring = 24;

@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "mujoco_warning_guard.h"
 #include "models/rail_rig.h"
 #include "sim/simulation.h"
 #include "input_error.h"
@@ -17,7 +19,10 @@ namespace {
 
 constexpr double kTol = 1e-9;
 
-TEST(SkinTest, DefaultsAreValid) {
+// Compiling a scene runs MuJoCo (its setup pass on a scratch mjData): no warning allowed.
+class SkinTest : public testing::MujocoWarningGuard {};
+
+TEST_F(SkinTest, DefaultsAreValid) {
   SkinConfig s;
   EXPECT_NO_THROW(ValidateConfig(s));
   ContactConfig c;
@@ -53,7 +58,7 @@ TEST(ContactFrictionTest, PerPinSpreadAndWeakeningSpeedAreRangeChecked) {
   }
 }
 
-TEST(SkinTest, LatticeHas127PinsInSevenHexRings) {
+TEST_F(SkinTest, LatticeHas127PinsInSevenHexRings) {
   const PinLattice lat = PinLattice::Build(SkinConfig{});
   ASSERT_EQ(lat.size(), 127u);
   std::map<int, int> per_ring;
@@ -65,7 +70,7 @@ TEST(SkinTest, LatticeHas127PinsInSevenHexRings) {
   EXPECT_NEAR(lat.pins[0].normal[0], 1.0, kTol);
 }
 
-TEST(SkinTest, NeighboursArePitchApartAlongTheDome) {
+TEST_F(SkinTest, NeighboursArePitchApartAlongTheDome) {
   SkinConfig cfg;
   const PinLattice lat = PinLattice::Build(cfg);
   // Hexagonal patch of radius r: 3 r (3 r + 1) edges.
@@ -81,7 +86,7 @@ TEST(SkinTest, NeighboursArePitchApartAlongTheDome) {
   }
 }
 
-TEST(SkinTest, LatticeThatDoesNotFitIsRejected) {
+TEST_F(SkinTest, LatticeThatDoesNotFitIsRejected) {
   SkinConfig cfg;
   cfg.rings = 11;  // 33 mm of arc on a 20 mm dome is past the equator
   try {
@@ -92,7 +97,7 @@ TEST(SkinTest, LatticeThatDoesNotFitIsRejected) {
   }
 }
 
-TEST(SkinTest, MechanicsFollowMaterialFormulas) {
+TEST_F(SkinTest, MechanicsFollowMaterialFormulas) {
   SkinConfig cfg;
   const SkinMechanics m = SkinMechanics::From(cfg, 127);
   const double area = std::sqrt(3.0) / 2.0 * 9e-6;
@@ -107,7 +112,7 @@ TEST(SkinTest, MechanicsFollowMaterialFormulas) {
   EXPECT_NEAR(t2.membrane_N_m / m.membrane_N_m, 2.0, 1e-9);
 }
 
-TEST(SkinTest, RailSceneCompilesWithOnlyReachablePinsCollidable) {
+TEST_F(SkinTest, RailSceneCompilesWithOnlyReachablePinsCollidable) {
   RailSceneSpec spec;
   spec.max_depth_m = 3.1e-3;
   const BuiltScene flat = BuildRailScene(spec);
@@ -124,7 +129,7 @@ TEST(SkinTest, RailSceneCompilesWithOnlyReachablePinsCollidable) {
   EXPECT_NO_THROW(CompiledModel::FromXml(curved.xml));
 }
 
-TEST(SkinTest, UncoupledLatticeHasThreeSpringsPerPinAndNoCoupling) {
+TEST_F(SkinTest, UncoupledLatticeHasThreeSpringsPerPinAndNoCoupling) {
   RailSceneSpec spec;
   spec.max_depth_m = 3e-3;
   const CompiledModel shell = CompiledModel::FromXml(BuildRailScene(spec).xml);
@@ -138,13 +143,15 @@ TEST(SkinTest, UncoupledLatticeHasThreeSpringsPerPinAndNoCoupling) {
   EXPECT_EQ(scene.xml.find("<fixed"), std::string::npos) << "no bending tendons in the uncoupled lattice";
 }
 
-TEST(SkinTest, CulledPinsReallyCannotTouch) {
+TEST_F(SkinTest, CulledPinsReallyCannotTouch) {
   // Pins without a contact geom must lie farther from the plate than the deepest press.
   SkinConfig skin;
   RailConfig rail;
   const PinLattice lat = PinLattice::Build(skin);
   const double depth = 3e-3;
   const auto coll = RailCollidablePins(skin, lat, rail, depth);
+  ASSERT_LT(std::count(coll.begin(), coll.end(), true), static_cast<long>(lat.size()))
+      << "premise: some pins are culled";
   for (const auto& p : lat.pins) {
     const double sag = skin.radius_mm * 1e-3 * (1.0 - p.normal[0]);  // apex-to-pin drop along the axis
     if (!coll[p.index]) {

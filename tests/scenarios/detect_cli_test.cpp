@@ -17,6 +17,7 @@
 #include "cli_helpers.h"
 #include "scenarios/bench.h"
 #include "scenarios/slip_data.h"
+#include "sensors/dataset.h"
 #include "sim/config.h"
 
 namespace fs = std::filesystem;
@@ -67,9 +68,14 @@ TEST(RunListTest, ParsesRangesAndListsSortedUnique) {
 TEST_F(DetectCliTest, DatasetRunsCarryTheirOnsetFrame) {
   const auto runs = LoadDatasetRuns(P("d.h5"), {0, 5});
   ASSERT_EQ(runs.size(), 2u);
+  const DatasetReader reader(P("d.h5"));
   for (const auto& r : runs) {
+    // The first frame at or after the run's gross-slip onset.
+    const double onset_s = reader.ReadRunSummary(r.run).attrs.at("gross_slip_onset_s");
     ASSERT_GE(r.onset_frame, r.first_frame);
-    EXPECT_GE(r.frames[r.onset_frame].time_s + 1e-9, r.frames[r.onset_frame - 1].time_s);
+    ASSERT_GT(r.onset_frame, 0);
+    EXPECT_GE(r.frames[r.onset_frame].time_s, onset_s - 1e-9) << "run " << r.run;
+    EXPECT_LT(r.frames[r.onset_frame - 1].time_s, onset_s - 1e-9) << "run " << r.run;
     EXPECT_NEAR(r.frame_rate_hz, 100.0, 1e-6);
     EXPECT_EQ(r.frames.front().size(), 127);
   }

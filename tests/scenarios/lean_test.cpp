@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli_helpers.h"
+#include "mujoco_warning_guard.h"
 #include "scenarios/lean.h"
 #include "scenarios/rail.h"
 
@@ -25,7 +26,11 @@ using testing::Slurp;
 // A short protocol with contact: press, a 10 mm lift, retraction at 2 mm/s to the fall.
 const std::vector<std::string> kShort = {"rail.retract_speed_mm_s=2", "rail.lift_mm=10"};
 
-TEST(LeanSceneTest, TheVariantsAreTheLeanSceneAndEachOmissionPutBack) {
+// MeasureLean replays each variant with bare mj_step, on an mjData whose warnings only
+// MuJoCo's hook sees.
+class LeanSceneTest : public testing::MujocoWarningGuard {};
+
+TEST_F(LeanSceneTest, TheVariantsAreTheLeanSceneAndEachOmissionPutBack) {
   const std::vector<LeanVariant> v = LeanVariants();
   ASSERT_GE(v.size(), 5u);
   EXPECT_EQ(v[0].name, "lean");
@@ -38,7 +43,7 @@ TEST(LeanSceneTest, TheVariantsAreTheLeanSceneAndEachOmissionPutBack) {
   }
 }
 
-TEST(LeanSceneTest, MeasuresEveryVariantWithContactAndTheLeanSceneIsTheSmallest) {
+TEST_F(LeanSceneTest, MeasuresEveryVariantWithContactAndTheLeanSceneIsTheSmallest) {
   LeanOptions o;
   o.overrides = kShort;
   const std::vector<LeanRow> rows = MeasureLean(ChooseLeanScenes({"rail curved20"}), o);
@@ -69,7 +74,7 @@ TEST(LeanSceneTest, MeasuresEveryVariantWithContactAndTheLeanSceneIsTheSmallest)
   EXPECT_EQ(rows[4].counts.nv, lean.counts.nv + 5);                          // + free object
 }
 
-TEST(LeanSceneTest, AnUnknownSceneIsRefused) {
+TEST_F(LeanSceneTest, AnUnknownSceneIsRefused) {
   EXPECT_THROW(ChooseLeanScenes({"rail bumpy"}), InputError);
   EXPECT_EQ(ChooseLeanScenes({}).size(), 2u);
 }

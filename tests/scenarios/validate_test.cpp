@@ -65,7 +65,6 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
   EXPECT_LT(c.contact_radius_mm, 12.0);
   for (const DomeSample& s : c.samples) EXPECT_LE(s.c_lo, s.c_hi + 1e-9) << "at Q/muP = " << s.q_ratio;
   EXPECT_GT(c.bracket_fraction, 0.0);
-  EXPECT_LE(c.bracket_fraction, 1.0);
   // Every contacting pin slips within 0.01 mu P of the lattice's exact quasi-static
   // release, ring by ring from the outside in, and the exact stick boundary meets the
   // band about as often as the simulated one.
