@@ -13,6 +13,7 @@
 #include "scenarios/cli/common.h"
 #include "scenarios/cli/option_checks.h"
 #include "scenarios/cli/output_checks.h"
+#include "scenarios/incipient_stop/stop_trials.h"
 #include "scenarios/rail_catch/catch_report.h"
 #include "sim/config.h"
 #include "sim/files.h"
@@ -179,6 +180,96 @@ CLI::App* AddRailCatch(CLI::App* run, CatchArgs& a) {
   return c;
 }
 
+// Options of `tactip run incipient-stop` (owned by the returned closure).
+struct StopArgs {
+  ConfigArgs config;   // --config, --set, --skin, --speed-mm-s (the incipient scenario's config)
+  StopOptions loop;    // steps, pause, hold, markers, detector
+  int trials = 20;
+  unsigned long long seed = 1;
+  int jobs = 0;
+  std::string out;     // --out DIR
+  bool quiet = false;
+};
+
+int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
+  // Everything checked before the first trial: loop, config, output folder.
+  a.loop.Validate();
+  const RailScenarioConfig cfg = FindScenario("incipient").resolve(a.config.Source()).config;
+  NewFolderGuard folder(a.out);
+  if (!a.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw InputError("cannot create output folder '" + a.out + "': " + ec.message());
+    CheckWritableLocation((std::filesystem::path(a.out) / "trials.csv").string());
+  }
+  StopTrialOptions o;
+  o.loop = a.loop;
+  o.trials = a.trials;
+  o.seed = a.seed;
+  o.jobs = a.jobs;
+  o.stop = stop;
+  if (!a.quiet) {
+    o.progress = [](const StopTrial& t) {
+      std::fprintf(stderr, "%s trial %d: %s, stop %s s, gross onset %s s, fall %s s\n", t.skin.c_str(), t.trial,
+                   ToString(t.outcome).c_str(), Fmt(t.stop_s).c_str(), Fmt(t.onset_s).c_str(), Fmt(t.fall_s).c_str());
+    };
+  }
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::vector<StopTrial> trials = RunStopTrials(cfg, o);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const std::string table = FormatStopTable(trials);
+  std::printf("incipient stop: %s, steps of %g mm at %g mm/s with %g s pauses, %s markers, W=%d s_thr=%g px I_thr=%d\n%s",
+              cfg.rail.stimulus.c_str(), a.loop.step_mm, cfg.rail.retract_speed_mm_s, a.loop.pause_s,
+              a.loop.markers.c_str(), a.loop.detector.window, a.loop.detector.speed_thr_px, a.loop.detector.count_thr,
+              table.c_str());
+  if (!a.out.empty()) {
+    const std::filesystem::path dir(a.out);
+    WriteFileAtomic((dir / "trials.csv").string(), StopTrialsCsv(trials));
+    WriteFileAtomic((dir / "summary.txt").string(), table);
+  }
+  folder.Keep();
+  std::fprintf(stderr, "done: %zu trial(s) in %.1f s wall%s%s\n", trials.size(), wall,
+               a.out.empty() ? "" : "; wrote trials.csv, summary.txt in ", a.out.c_str());
+  return 0;
+}
+
+// Registers `tactip run incipient-stop`.
+CLI::App* AddIncipientStop(CLI::App* run, StopArgs& a) {
+  auto* c = run->add_subcommand(
+      "incipient-stop",
+      "The hardware's online incipient-slip detection on the transparent-acrylic rig: after the lift the arm retracts "
+      "in small steps and stops when the incipient detector (bulk subtraction) fires. Scores each trial stopped / "
+      "stopped_late / missed. Config: the incipient scenario's (fingerprint-v2 skin by default).");
+  c->add_option("--config", a.config.config_path, "YAML config file of the incipient scenario.")
+      ->check(NonEmpty("a YAML file"))
+      ->check(CLI::ExistingFile);
+  c->add_option("--set", a.config.sets, "Override one config key (repeatable).")
+      ->type_name("KEY=VALUE")
+      ->check(NonEmpty("KEY=VALUE"));
+  c->add_option("--skin", a.config.skin, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (default).")
+      ->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
+  c->add_option("--speed-mm-s", a.config.speed_mm_s, "Speed of each retraction step (default 0.3 mm/s).")
+      ->check(NumberWithin(0.1, 20.0));
+  c->add_option("--step-mm", a.loop.step_mm, "Retraction per step (default 0.2 mm).")->check(FiniteNumber());
+  c->add_option("--pause-s", a.loop.pause_s, "Still time after each step (default 0.3 s).")->check(FiniteNumber());
+  c->add_option("--hold-s", a.loop.hold_s, "How long the trial watches the object after the stop (default 2 s).")
+      ->check(FiniteNumber());
+  c->add_option("--markers", a.loop.markers, "Markers the detector reads: internal (default) or external.")
+      ->check(NonEmpty("internal or external"));
+  c->add_option("--window", a.loop.detector.window, "Detector W: moving-average frames (default 5).");
+  c->add_option("--speed-thr-px", a.loop.detector.speed_thr_px, "Detector s_thr, px/frame (default 0.2).")
+      ->check(FiniteNumber());
+  c->add_option("--count-thr", a.loop.detector.count_thr, "Detector I_thr: pins (default 4).");
+  c->add_option("--trials", a.trials, "Trials (default 20).")->check(CLI::Range(1, 10000));
+  AddSeedOption(c, a.seed, "Seed: trial i is run i of this seed (default 1).");
+  c->add_option("--jobs", a.jobs, "Trials run at once (default: all cores).")->check(CLI::Range(0, 256));
+  c->add_option("--out", a.out, "Write trials.csv and summary.txt into DIR (created).")
+      ->type_name("DIR")
+      ->check(NonEmpty("a folder"));
+  c->add_flag("--quiet", a.quiet, "No per-trial progress lines.");
+  return c;
+}
+
 }  // namespace
 
 std::function<int()> AddRunCommands(CLI::App& app, const std::atomic<bool>* stop) {
@@ -186,7 +277,13 @@ std::function<int()> AddRunCommands(CLI::App& app, const std::atomic<bool>* stop
   run->require_subcommand(1);
   auto a = std::make_shared<CatchArgs>();
   auto* rail_catch = AddRailCatch(run, *a);
-  return [a, rail_catch, stop]() -> int { return *rail_catch ? RunRailCatch(*a, stop) : -1; };
+  auto b = std::make_shared<StopArgs>();
+  auto* incipient_stop = AddIncipientStop(run, *b);
+  return [a, b, rail_catch, incipient_stop, stop]() -> int {
+    if (*rail_catch) return RunRailCatch(*a, stop);
+    if (*incipient_stop) return RunIncipientStop(*b, stop);
+    return -1;
+  };
 }
 
 }  // namespace tactip::cli

@@ -45,6 +45,9 @@ class RailController {
   virtual void OnFrame(const FrameInput& input) {}
   /// True when the controller's trial is over and the run may end at time t.
   virtual bool Done(double t) const { return false; }
+  /// The latest time the run may last (s): the protocol's give-up time unless the
+  /// controller retracts more slowly.
+  virtual double GiveUpTime(const RailSchedule& schedule) const { return schedule.give_up; }
   /// What the controller did so far.
   virtual std::vector<ControllerAction> Actions() const { return {}; }
   /// Figures the controller measured (e.g. classification time), by name.
