@@ -13,6 +13,7 @@
 #include "detectors/detector.h"
 #include "scenarios/cli/accuracy_command.h"
 #include "scenarios/cli/detect_commands.h"
+#include "scenarios/cli/run_commands.h"
 #include "scenarios/cli/scenario_commands.h"
 #include "scenarios/cli/stability_commands.h"
 #include "scenarios/cli/study_commands.h"
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
       tactip::cli::AddAccuracyCommand(app, &g_stop),
       tactip::cli::AddStabilityCommands(app, &g_stop),
       tactip::cli::AddDetectorCommands(app, &g_stop),
+      tactip::cli::AddRunCommands(app, &g_stop),
   };
   try {
     app.parse(argc, argv);
@@ -86,7 +88,7 @@ int main(int argc, char** argv) {
   }
   // Long simulations stop cleanly on Ctrl-C; other commands keep the default handling
   // (their outputs are written atomically at the end).
-  for (const char* name : {"generate", "merge", "sweep", "bench", "stability"}) {
+  for (const char* name : {"generate", "merge", "sweep", "bench", "stability", "run"}) {
     if (app.got_subcommand(name)) {
       std::signal(SIGINT, OnSignal);
       std::signal(SIGTERM, OnSignal);

@@ -5,6 +5,9 @@
 // that follows RailSchedule and ignores the frames; closed-loop protocols (catch, stop)
 // run a detector on the frames and change the targets.
 
+#include <functional>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,9 +45,18 @@ class RailController {
   virtual void OnFrame(const FrameInput& input) {}
   /// True when the controller's trial is over and the run may end at time t.
   virtual bool Done(double t) const { return false; }
+  /// The latest time the run may last (s): the protocol's give-up time unless the
+  /// controller retracts more slowly.
+  virtual double GiveUpTime(const RailSchedule& schedule) const { return schedule.give_up; }
   /// What the controller did so far.
   virtual std::vector<ControllerAction> Actions() const { return {}; }
+  /// Figures the controller measured (e.g. classification time), by name.
+  virtual std::map<std::string, double> Figures() const { return {}; }
 };
+
+/// Makes the controller of run `index` for that run's timeline (an empty factory: the
+/// offline protocol).
+using ControllerFactory = std::function<std::unique_ptr<RailController>(int index, const RailSchedule& schedule)>;
 
 /// The offline protocol: RailSchedule's timeline, frames ignored.
 class ScheduleController : public RailController {

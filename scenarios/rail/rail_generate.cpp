@@ -14,7 +14,8 @@
 namespace tactip {
 
 void RunRailRuns(const RailScenario& scenario, int first, int runs, std::uint64_t seed, int jobs_requested,
-                 const std::atomic<bool>* stop, const std::function<void(RunRecord&&, const RailRunSummary&)>& take) {
+                 const std::atomic<bool>* stop, const std::function<void(RunRecord&&, const RailRunSummary&)>& take,
+                 const ControllerFactory& make) {
   // Workers take run indices in order; this thread hands them to `take` in order.
   const int jobs = std::max(
       1, std::min(runs, jobs_requested > 0 ? jobs_requested : static_cast<int>(std::thread::hardware_concurrency())));
@@ -37,7 +38,7 @@ void RunRailRuns(const RailScenario& scenario, int first, int runs, std::uint64_
       }
       try {
         RunRecord rec;
-        const RailRunSummary s = scenario.Run(first + idx, seed, rec, &abort);
+        const RailRunSummary s = scenario.Run(first + idx, seed, rec, &abort, make);
         std::lock_guard lock(mu);
         done.emplace(idx, std::move(rec));
         summaries.emplace(idx, s);

@@ -34,10 +34,12 @@ struct GenerateResult {
 };
 
 /// Simulates runs first..first+runs-1 of `scenario` on `jobs` threads (0 = all cores) and
-/// hands each record to `take` in run order, on the calling thread. Rethrows the first
+/// hands each record to `take` in run order, on the calling thread; `make`, if set, gives
+/// each run its controller (closed loop). Rethrows the first
 /// failure; throws Interrupted when `*stop` becomes true.
 void RunRailRuns(const RailScenario& scenario, int first, int runs, std::uint64_t seed, int jobs,
-                 const std::atomic<bool>* stop, const std::function<void(RunRecord&&, const RailRunSummary&)>& take);
+                 const std::atomic<bool>* stop, const std::function<void(RunRecord&&, const RailRunSummary&)>& take,
+                 const ControllerFactory& make = {});
 
 /// Simulates `opts.runs` runs (or the shard's block of them) in parallel and writes them,
 /// in run order, to an HDF5 file (atomically). Same seed and config give a bit-identical

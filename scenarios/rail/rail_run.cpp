@@ -347,6 +347,8 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   rec.text_attrs["health_reason"] = sum_.health.reason;
   rec.text_attrs["stimulus"] = c_.rail.stimulus;
   rec.text_attrs["skin_pattern"] = c_.skin.pattern;
+  sum_.actions = controller_->Actions();
+  sum_.controller_figures = controller_->Figures();
   rec.CheckShapes();
   sum_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
   if (instrument_) instrument_->profile = sim_->profile();

@@ -54,6 +54,11 @@ class RailRun {
   RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int index, std::uint64_t seed,
           RailController* controller = nullptr);
 
+  /// Drives the arm with `controller` instead (before the first step; it must outlive the run).
+  void SetController(RailController* controller) {
+    controller_ = controller ? controller : &schedule_controller_;
+    end_time_ = controller_->GiveUpTime(sched_);
+  }
   /// Times every step's stages and records the controls into `out` (before the first step).
   void Instrument(RunInstrumentation* out);
   /// Advances one physics step, recording a camera frame into `rec` when one is due;

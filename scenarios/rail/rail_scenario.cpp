@@ -22,6 +22,17 @@ RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec, 
   return run.Execute(rec, stop);
 }
 
+RailRunSummary RailScenario::Run(int index, std::uint64_t seed, RunRecord& rec, const std::atomic<bool>* stop,
+                                 const ControllerFactory& make) const {
+  RailRun run(cfg_, *ids_, index, seed);
+  std::unique_ptr<RailController> controller;
+  if (make) {
+    controller = make(index, run.schedule());
+    run.SetController(controller.get());
+  }
+  return run.Execute(rec, stop);
+}
+
 RailRunSummary RailScenario::RunInstrumented(int index, std::uint64_t seed, RunRecord& rec,
                                              RunInstrumentation& out) const {
   RailRun run(cfg_, *ids_, index, seed);

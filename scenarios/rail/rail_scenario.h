@@ -4,12 +4,14 @@
 
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "scenarios/rail/rail_config.h"
+#include "scenarios/rail/rail_controller.h"
 #include "scenarios/rail/run_health.h"
 #include "sensors/dataset.h"
 #include "sim/simulation.h"
@@ -36,6 +38,8 @@ struct RailRunSummary {
   int mujoco_warnings = 0;           ///< warnings MuJoCo raised (a run with any stops early)
   bool held = true;                  ///< false: the object slipped before the retraction started
   RunHealth health;                  ///< run health figures and verdict
+  std::vector<ControllerAction> actions;  ///< what the run's controller did
+  std::map<std::string, double> controller_figures;  ///< what it measured (RailController::Figures)
 };
 
 /// Thrown by a run when its stop flag becomes true (Ctrl-C).
@@ -69,6 +73,9 @@ class RailScenario {
   /// when `*stop` becomes true.
   RailRunSummary Run(int index, std::uint64_t seed, RunRecord& record,
                      const std::atomic<bool>* stop = nullptr) const;
+  /// The same run with the arm driven by the controller `make` returns for it (closed loop).
+  RailRunSummary Run(int index, std::uint64_t seed, RunRecord& record, const std::atomic<bool>* stop,
+                     const ControllerFactory& make) const;
   /// The same run, timing every stage of every step and recording the controls.
   RailRunSummary RunInstrumented(int index, std::uint64_t seed, RunRecord& record, RunInstrumentation& out) const;
   /// The compiled scene (shared read-only by the runs).

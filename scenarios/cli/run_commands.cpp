@@ -1,0 +1,289 @@
+#include "scenarios/cli/run_commands.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "scenarios/cli/common.h"
+#include "scenarios/cli/option_checks.h"
+#include "scenarios/cli/output_checks.h"
+#include "scenarios/incipient_stop/stop_trials.h"
+#include "scenarios/rail_catch/catch_report.h"
+#include "sim/config.h"
+#include "sim/files.h"
+
+namespace tactip::cli {
+
+namespace {
+
+// Where `tactip bench` leaves its RBF SVM with its default --out.
+constexpr const char* kBenchDefaultModel = "bench-results/svm-rbf.model";
+
+// Options of `tactip run rail-catch` (owned by the returned closure).
+struct CatchArgs {
+  ConfigArgs config;                  // --config, --set, --skin (the rail scenario's config)
+  std::string model;                  // --model FILE
+  CatchOptions loop;                  // --response, latencies, catch speed, hold
+  std::string speeds = "1";           // --speed-mm-s LIST
+  std::string stimuli = "flat";       // --stimulus LIST
+  int trials = 20;
+  unsigned long long seed = 1;
+  int jobs = 0;
+  std::string out;                    // --out DIR
+  bool quiet = false;
+};
+
+// "a,b,c" -> its non-empty items; throws InputError naming `option` for an empty item.
+std::vector<std::string> SplitList(const std::string& option, const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (item.empty()) throw InputError(fmt::format("{} '{}': empty item in the list", option, text));
+    items.push_back(item);
+  }
+  if (items.empty() || text.back() == ',') throw InputError(fmt::format("{} '{}': empty item in the list", option, text));
+  return items;
+}
+
+// The retraction speeds of --speed-mm-s, each in the hardware's range 0.1-20 mm/s.
+std::vector<double> ParseSpeeds(const std::string& text) {
+  std::vector<double> speeds;
+  for (const std::string& item : SplitList("--speed-mm-s", text)) {
+    const double v = config_detail::ParseReal("--speed-mm-s", item);
+    if (!(v >= 0.1 && v <= 20.0)) {
+      throw InputError(fmt::format("--speed-mm-s {}: must be in [0.1, 20] mm/s (the hardware's range)", item));
+    }
+    speeds.push_back(v);
+  }
+  return speeds;
+}
+
+// The config of one (stimulus, speed) row: the user's config with the two shortcuts set.
+RailScenarioConfig RowConfig(const CatchArgs& a, const std::string& stimulus, double speed) {
+  ConfigArgs row = a.config;
+  row.stimulus = stimulus;
+  row.speed_mm_s = speed;
+  return FindScenario("rail").resolve(row.Source()).config;
+}
+
+int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
+  // Everything checked before the first trial: model, loop, lists, configs, output folder.
+  const std::string model = a.model.empty() ? kBenchDefaultModel : a.model;
+  if (a.model.empty() && !std::filesystem::exists(model)) {
+    throw InputError(fmt::format("no detector model: '{}' does not exist; train one with 'tactip bench' (it writes "
+                                 "it) or 'tactip train', or give --model FILE",
+                                 model));
+  }
+  LoadDetector(model);
+  a.loop.Validate();
+  const std::vector<double> speeds = ParseSpeeds(a.speeds);
+  std::vector<std::string> stimuli = SplitList("--stimulus", a.stimuli);
+  if (stimuli == std::vector<std::string>{"all"}) stimuli = {"flat", "curved80", "curved40", "curved20"};
+  std::vector<RailScenarioConfig> rows;
+  for (const std::string& s : stimuli) {
+    for (double v : speeds) rows.push_back(RowConfig(a, s, v));
+  }
+  NewFolderGuard folder(a.out);
+  if (!a.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw InputError("cannot create output folder '" + a.out + "': " + ec.message());
+    CheckWritableLocation((std::filesystem::path(a.out) / "trials.csv").string());
+  }
+  // The trials, row by row, with a progress line per trial.
+  CatchTrialOptions o;
+  o.model_path = model;
+  o.loop = a.loop;
+  o.trials = a.trials;
+  o.seed = a.seed;
+  o.jobs = a.jobs;
+  o.stop = stop;
+  if (!a.quiet) {
+    o.progress = [](const CatchTrial& t) {
+      std::fprintf(stderr, "%s %g mm/s trial %d: %s, slip %.1f mm, declared %s s after onset %s s\n",
+                   t.stimulus.c_str(), t.speed_mm_s, t.trial, ToString(t.outcome).c_str(), t.slip_distance_mm,
+                   Fmt(t.declared_s).c_str(), Fmt(t.onset_s).c_str());
+    };
+  }
+  const auto wall0 = std::chrono::steady_clock::now();
+  std::vector<CatchTrial> trials;
+  for (const RailScenarioConfig& cfg : rows) {
+    const std::vector<CatchTrial> row = RunCatchTrials(cfg, o);
+    trials.insert(trials.end(), row.begin(), row.end());
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  // The table, and in --out the trials and the summary.
+  const std::vector<CatchSummaryRow> summary = SummariseCatch(trials);
+  const std::string table = FormatCatchTable(summary);
+  std::printf("rail catch: model %s, response %s, latency %g ms classify + %g ms arm, catch at %g mm/s\n%s",
+              model.c_str(), a.loop.response.c_str(), a.loop.classify_ms, a.loop.arm_response_ms,
+              a.loop.catch_speed_mm_s, table.c_str());
+  if (!a.out.empty()) {
+    const std::filesystem::path dir(a.out);
+    WriteFileAtomic((dir / "trials.csv").string(), CatchTrialsCsv(trials));
+    WriteFileAtomic((dir / "summary.csv").string(), CatchSummaryCsv(summary));
+    WriteFileAtomic((dir / "summary.txt").string(), table);
+  }
+  folder.Keep();
+  std::fprintf(stderr, "done: %zu trial(s) in %.1f s wall%s%s\n", trials.size(), wall,
+               a.out.empty() ? "" : "; wrote trials.csv, summary.csv, summary.txt in ", a.out.c_str());
+  return 0;
+}
+
+// Registers `tactip run rail-catch`.
+CLI::App* AddRailCatch(CLI::App* run, CatchArgs& a) {
+  auto* c = run->add_subcommand(
+      "rail-catch",
+      "The hardware's online slip detection and grasp recovery: the rail protocol with a trained detector reading "
+      "every camera frame; when the response strategy fires, the arm (after the loop's latency) moves back in to "
+      "catch the object. Scores each trial caught / false_positive / dropped with the slip distance.");
+  c->add_option("--config", a.config.config_path, "YAML config file of the rail scenario.")
+      ->check(NonEmpty("a YAML file"))
+      ->check(CLI::ExistingFile);
+  c->add_option("--set", a.config.sets, "Override one rail config key (repeatable).")
+      ->type_name("KEY=VALUE")
+      ->check(NonEmpty("KEY=VALUE"));
+  c->add_option("--skin", a.config.skin, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2.")
+      ->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
+  c->add_option("--model", a.model, fmt::format("Trained detector (default: {}, which 'tactip bench' writes).",
+                                                kBenchDefaultModel))
+      ->check(NonEmpty("a model file"));
+  c->add_option("--response", a.loop.response, "Response strategy NFr1Sen (default 2Fr1Sen, as on hardware).")
+      ->check(NonEmpty("e.g. 2Fr1Sen"));
+  c->add_option("--classify-ms", a.loop.classify_ms, "Classification time per frame, ms (default 3, hardware).")
+      ->check(FiniteNumber());
+  c->add_option("--arm-response-ms", a.loop.arm_response_ms, "From the command to the arm moving, ms (default 10).")
+      ->check(FiniteNumber());
+  c->add_option("--catch-speed-mm-s", a.loop.catch_speed_mm_s, "Speed of the arm moving back in (default 50).")
+      ->check(FiniteNumber());
+  c->add_option("--hold-s", a.loop.hold_s, "How long the trial watches the object once the arm is back (default 0.5).")
+      ->check(FiniteNumber());
+  c->add_option("--speed-mm-s", a.speeds, "Retraction speeds, comma-separated, 0.1-20 mm/s (default 1).")
+      ->type_name("LIST")
+      ->check(NonEmpty("e.g. 0.1,1,3,5,10,20"));
+  c->add_option("--stimulus", a.stimuli, "Stimuli, comma-separated, or all (default flat).")
+      ->type_name("LIST")
+      ->check(NonEmpty("e.g. flat,curved40 or all"));
+  c->add_option("--trials", a.trials, "Trials per stimulus and speed (default 20).")->check(CLI::Range(1, 10000));
+  AddSeedOption(c, a.seed, "Seed: trial i is rail run i of this seed (default 1).");
+  c->add_option("--jobs", a.jobs, "Trials run at once (default: all cores).")->check(CLI::Range(0, 256));
+  c->add_option("--out", a.out, "Write trials.csv, summary.csv and summary.txt into DIR (created).")
+      ->type_name("DIR")
+      ->check(NonEmpty("a folder"));
+  c->add_flag("--quiet", a.quiet, "No per-trial progress lines.");
+  return c;
+}
+
+// Options of `tactip run incipient-stop` (owned by the returned closure).
+struct StopArgs {
+  ConfigArgs config;   // --config, --set, --skin, --speed-mm-s (the incipient scenario's config)
+  StopOptions loop;    // steps, pause, hold, markers, detector
+  int trials = 20;
+  unsigned long long seed = 1;
+  int jobs = 0;
+  std::string out;     // --out DIR
+  bool quiet = false;
+};
+
+int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
+  // Everything checked before the first trial: loop, config, output folder.
+  a.loop.Validate();
+  const RailScenarioConfig cfg = FindScenario("incipient").resolve(a.config.Source()).config;
+  NewFolderGuard folder(a.out);
+  if (!a.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw InputError("cannot create output folder '" + a.out + "': " + ec.message());
+    CheckWritableLocation((std::filesystem::path(a.out) / "trials.csv").string());
+  }
+  StopTrialOptions o;
+  o.loop = a.loop;
+  o.trials = a.trials;
+  o.seed = a.seed;
+  o.jobs = a.jobs;
+  o.stop = stop;
+  if (!a.quiet) {
+    o.progress = [](const StopTrial& t) {
+      std::fprintf(stderr, "%s trial %d: %s, stop %s s, gross onset %s s, fall %s s\n", t.skin.c_str(), t.trial,
+                   ToString(t.outcome).c_str(), Fmt(t.stop_s).c_str(), Fmt(t.onset_s).c_str(), Fmt(t.fall_s).c_str());
+    };
+  }
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::vector<StopTrial> trials = RunStopTrials(cfg, o);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const std::string table = FormatStopTable(trials);
+  std::printf("incipient stop: %s, steps of %g mm at %g mm/s with %g s pauses, %s markers, W=%d s_thr=%g px I_thr=%d\n%s",
+              cfg.rail.stimulus.c_str(), a.loop.step_mm, cfg.rail.retract_speed_mm_s, a.loop.pause_s,
+              a.loop.markers.c_str(), a.loop.detector.window, a.loop.detector.speed_thr_px, a.loop.detector.count_thr,
+              table.c_str());
+  if (!a.out.empty()) {
+    const std::filesystem::path dir(a.out);
+    WriteFileAtomic((dir / "trials.csv").string(), StopTrialsCsv(trials));
+    WriteFileAtomic((dir / "summary.txt").string(), table);
+  }
+  folder.Keep();
+  std::fprintf(stderr, "done: %zu trial(s) in %.1f s wall%s%s\n", trials.size(), wall,
+               a.out.empty() ? "" : "; wrote trials.csv, summary.txt in ", a.out.c_str());
+  return 0;
+}
+
+// Registers `tactip run incipient-stop`.
+CLI::App* AddIncipientStop(CLI::App* run, StopArgs& a) {
+  auto* c = run->add_subcommand(
+      "incipient-stop",
+      "The hardware's online incipient-slip detection on the transparent-acrylic rig: after the lift the arm retracts "
+      "in small steps and stops when the incipient detector (bulk subtraction) fires. Scores each trial stopped / "
+      "stopped_late / missed. Config: the incipient scenario's (fingerprint-v2 skin by default).");
+  c->add_option("--config", a.config.config_path, "YAML config file of the incipient scenario.")
+      ->check(NonEmpty("a YAML file"))
+      ->check(CLI::ExistingFile);
+  c->add_option("--set", a.config.sets, "Override one config key (repeatable).")
+      ->type_name("KEY=VALUE")
+      ->check(NonEmpty("KEY=VALUE"));
+  c->add_option("--skin", a.config.skin, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (default).")
+      ->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
+  c->add_option("--speed-mm-s", a.config.speed_mm_s, "Speed of each retraction step (default 0.3 mm/s).")
+      ->check(NumberWithin(0.1, 20.0));
+  c->add_option("--step-mm", a.loop.step_mm, "Retraction per step (default 0.2 mm).")->check(FiniteNumber());
+  c->add_option("--pause-s", a.loop.pause_s, "Still time after each step (default 0.3 s).")->check(FiniteNumber());
+  c->add_option("--hold-s", a.loop.hold_s, "How long the trial watches the object after the stop (default 2 s).")
+      ->check(FiniteNumber());
+  c->add_option("--markers", a.loop.markers, "Markers the detector reads: internal (default) or external.")
+      ->check(NonEmpty("internal or external"));
+  c->add_option("--window", a.loop.detector.window, "Detector W: moving-average frames (default 5).");
+  c->add_option("--speed-thr-px", a.loop.detector.speed_thr_px, "Detector s_thr, px/frame (default 0.2).")
+      ->check(FiniteNumber());
+  c->add_option("--count-thr", a.loop.detector.count_thr, "Detector I_thr: pins (default 4).");
+  c->add_option("--trials", a.trials, "Trials (default 20).")->check(CLI::Range(1, 10000));
+  AddSeedOption(c, a.seed, "Seed: trial i is run i of this seed (default 1).");
+  c->add_option("--jobs", a.jobs, "Trials run at once (default: all cores).")->check(CLI::Range(0, 256));
+  c->add_option("--out", a.out, "Write trials.csv and summary.txt into DIR (created).")
+      ->type_name("DIR")
+      ->check(NonEmpty("a folder"));
+  c->add_flag("--quiet", a.quiet, "No per-trial progress lines.");
+  return c;
+}
+
+}  // namespace
+
+std::function<int()> AddRunCommands(CLI::App& app, const std::atomic<bool>* stop) {
+  auto* run = app.add_subcommand("run", "Closed-loop protocols: a detector reads every camera frame and acts.");
+  run->require_subcommand(1);
+  auto a = std::make_shared<CatchArgs>();
+  auto* rail_catch = AddRailCatch(run, *a);
+  auto b = std::make_shared<StopArgs>();
+  auto* incipient_stop = AddIncipientStop(run, *b);
+  return [a, b, rail_catch, incipient_stop, stop]() -> int {
+    if (*rail_catch) return RunRailCatch(*a, stop);
+    if (*incipient_stop) return RunIncipientStop(*b, stop);
+    return -1;
+  };
+}
+
+}  // namespace tactip::cli
