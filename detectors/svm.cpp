@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 
@@ -16,6 +17,13 @@
 
 namespace tactip {
 namespace {
+
+/// libsvm reads and writes model files through process-wide state (a static line buffer,
+/// and setlocale around the text): one model file at a time in the whole process.
+std::mutex& LibsvmFileMutex() {
+  static std::mutex m;
+  return m;
+}
 
 /// Frees a libsvm model (whether from svm_train or svm_load_model).
 struct SvmModelFree {
@@ -83,8 +91,11 @@ SvmModelPtr TrainOne(NodeRows& rows, std::vector<double>& y, const svm_parameter
 /// libsvm's text for `model` (libsvm 3.24 writes models only to files).
 std::string ModelText(const svm_model* model) {
   const TempFile tmp;
-  if (svm_save_model(tmp.path().c_str(), model) != 0) {
-    throw DetectorInputError("cannot write the libsvm model to '" + tmp.path() + "'");
+  {
+    const std::lock_guard lock(LibsvmFileMutex());
+    if (svm_save_model(tmp.path().c_str(), model) != 0) {
+      throw DetectorInputError("cannot write the libsvm model to '" + tmp.path() + "'");
+    }
   }
   return ReadText(tmp.path());
 }
@@ -222,6 +233,7 @@ std::unique_ptr<SvmDetector::Impl> SvmDetector::MakeImpl(Kernel kernel, FeatureS
     const TempFile tmp;
     tmp.Write(m->libsvm_text, path);
     SilenceLibsvm();
+    const std::lock_guard lock(LibsvmFileMutex());
     m->model.reset(svm_load_model(tmp.path().c_str()));
   }
   if (!m->model) throw DetectorInputError("model '" + path + "': libsvm could not read the embedded model");

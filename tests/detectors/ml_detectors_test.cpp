@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <atomic>
 #include <mutex>
+#include <thread>
 #include <tuple>
 #include <numbers>
 #include <random>
@@ -456,6 +458,37 @@ TEST(SvmDetectorTest, BadOptionsAndWrongPinCountThrow) {
   f.pos_px = Eigen::Matrix<float, Eigen::Dynamic, 2>::Zero(7, 2);
   det->Update(f);
   ExpectInputError([&] { det->Update(f); }, {"14 features", "expects 38"});
+}
+
+}  // namespace
+}  // namespace tactip
+
+namespace tactip {
+namespace {
+
+TEST(SvmDetectorTest, ModelsLoadAndSaveFromManyThreadsAtOnce) {
+  // libsvm's model reader keeps process-wide state; closed-loop trials load one detector
+  // per trial on every worker thread.
+  const std::string path = TempPath("threads.model");
+  SvmDetector::Train(TrainSet(), SvmDetector::Kernel::kRbf, Options())->Save(path);
+  const std::string text = ReadText(path);
+  std::vector<std::thread> threads;
+  std::atomic<int> identical{0};
+  constexpr int kThreads = 8, kLoads = 20;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      for (int k = 0; k < kLoads; ++k) {
+        const auto det = SvmDetector::Load(path);
+        const std::string again = TempPath("threads." + std::to_string(t) + ".model");
+        det->Save(again);
+        if (ReadText(again) == text) ++identical;
+        std::filesystem::remove(again);
+      }
+    });
+  }
+  for (auto& th : threads) th.join();
+  EXPECT_EQ(identical.load(), kThreads * kLoads);
+  std::filesystem::remove(path);
 }
 
 }  // namespace
