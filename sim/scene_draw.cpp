@@ -60,7 +60,8 @@ void SceneDraw::Draw(const Simulation& sim, const RenderOptions& options, mjrRec
   // mjv_updateScene only reads the state (it counts a VGEOMFULL warning in mjData when the
   // scene is full, which SceneCapacity avoids and Simulation ignores).
   mjData* d = const_cast<mjData*>(sim.raw());
-  m->vis.map.force = options.force_scale_m_N > 0.0 ? options.force_scale_m_N : default_force_scale_;
+  // MuJoCo draws a force F as an arrow F * map.force / meanmass long.
+  m->vis.map.force = options.force_scale_m_N > 0.0 ? options.force_scale_m_N * m->stat.meanmass : default_force_scale_;
   option_.flags[mjVIS_CONTACTFORCE] = options.contact_forces ? 1 : 0;
   FollowBodies(d);
   mjv_updateScene(m, d, &option_, nullptr, &camera_, mjCAT_ALL, &scene_);

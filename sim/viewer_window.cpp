@@ -87,10 +87,11 @@ ViewerWindow::~ViewerWindow() {
   state_->draw.reset();
 }
 
-void ViewerWindow::Run(ViewSource& source) {
+void ViewerWindow::Run(ViewSource& source, bool show_forces) {
   using Clock = std::chrono::steady_clock;
   State& s = *state_;
   GLFWwindow* w = s.window->get();
+  if (show_forces != s.controls.show_forces()) s.controls.Apply(ViewerCommand::kToggleForces);
   s.draw->SetView(source.Camera());
   auto last = Clock::now();
   while (!glfwWindowShouldClose(w) && !s.controls.quit()) {

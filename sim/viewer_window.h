@@ -20,8 +20,9 @@ class ViewerWindow {
   ViewerWindow& operator=(const ViewerWindow&) = delete;
 
   /// Shows `source` (a simulation of the window's model), stepping it in real time or
-  /// slower, until Esc is pressed or the window is closed.
-  void Run(ViewSource& source);
+  /// slower, until Esc is pressed or the window is closed; contact forces are drawn from
+  /// the start when `show_forces` is true ('f' toggles them).
+  void Run(ViewSource& source, bool show_forces = false);
 
   /// Per-window input and drawing state (defined with the GLFW callbacks).
   struct State;
