@@ -131,6 +131,7 @@ TEST_F(ViewCliTest, BadOptionsAreRefusedBeforeTheSceneIsBuilt) {
   // Each one line naming the option and what it allows; nothing written.
   const std::pair<std::string, std::string> cases[] = {
       {"--screenshot " + P("rail.jpg"), "tactip: --screenshot " + P("rail.jpg") + ": must name a .png file\n"},
+      {"--screenshot ''", "tactip: --screenshot: must name a .png file (see --help)\n"},
       {"--screenshot " + P("rail.png") + " --time -1", "tactip: --time = -1: must be in [0, 600] s\n"},
       {"--screenshot " + P("rail.png") + " --time nan", "tactip: --time = nan: must be in [0, 600] s\n"},
       {"--screenshot " + P("rail.png") + " --width 8", "tactip: --width = 8: must be in [16, 4096] pixels\n"},

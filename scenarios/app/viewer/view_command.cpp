@@ -93,7 +93,8 @@ std::function<int()> AddViewCommand(CLI::App& app) {
   view->add_option("--set", a->sets, "Override one config key (repeatable), e.g. --set rail.stimulus=curved40.")
       ->type_name("KEY=VALUE");
   view->add_option("--screenshot", a->screenshot,
-                   "Render one frame into this PNG file and exit (no window; headless: xvfb-run -a tactip view ...).");
+                   "Render one frame into this PNG file and exit (no window; headless: xvfb-run -a tactip view ...).")
+      ->check([](const std::string& path) { return path.empty() ? std::string("must name a .png file") : std::string(); });
   view->add_option("--time", a->time_s,
                    fmt::format("Simulated time of the frame shown first, in [0, {}] s (default 0: the initial state).",
                                kMaxViewTimeS));
