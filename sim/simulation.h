@@ -149,6 +149,8 @@ class Simulation {
   /// in springs and tendons at the step's start (J).
   double energy_created_J() const { return energy_created_J_; }
   double elastic_energy_J() const { return elastic_energy_J_; }
+  /// The raw data, for code inside sim/ (e.g. the renderer).
+  const mjData_* raw() const { return data_.get(); }
   /// True when the model asks for tactip's friction pass (see FrictionPass).
   bool friction_pass() const { return friction_ != nullptr; }
   /// What the friction pass did in the last step (zeros when it is off).

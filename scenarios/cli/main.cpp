@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "detectors/detector.h"
+#include "scenarios/app/viewer/view_command.h"
 #include "scenarios/cli/accuracy_command.h"
 #include "scenarios/cli/detect_commands.h"
 #include "scenarios/cli/run_commands.h"
@@ -73,6 +74,7 @@ int main(int argc, char** argv) {
       tactip::cli::AddStabilityCommands(app, &g_stop),
       tactip::cli::AddDetectorCommands(app, &g_stop),
       tactip::cli::AddRunCommands(app, &g_stop),
+      tactip::cli::AddViewCommand(app),
   };
   try {
     app.parse(argc, argv);
