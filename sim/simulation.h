@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/base/errors.h"
 #include "sim/friction_plane.h"
 #include "sim/step_profile.h"
 #include "sim/friction_pass.h"
@@ -17,20 +18,6 @@ struct mjModel_;
 struct mjData_;
 
 namespace tactip {
-
-
-/// Thrown when an MJCF text does not compile or a named element is missing.
-class ModelError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-/// Thrown when a run becomes numerically invalid (NaN, reset state, dropped contacts);
-/// the message names the warning, the simulated time and what to change.
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// Deleters so MuJoCo structs live in std::unique_ptr.
 struct MjModelDeleter {

@@ -23,7 +23,7 @@
 #include "scenarios/slip_data.h"
 #include "scenarios/speed.h"
 #include "sensors/dataset.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

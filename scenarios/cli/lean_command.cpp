@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -11,7 +11,7 @@
 #include "scenarios/cli/option_checks.h"
 #include "scenarios/cli/output_checks.h"
 #include "scenarios/dataset_merge.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -11,7 +11,7 @@
 #include "scenarios/cli/output_checks.h"
 #include "scenarios/stability_suite.h"
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -12,7 +12,7 @@
 #include "scenarios/incipient_report.h"
 #include "scenarios/sweep.h"
 #include "scenarios/validate.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -19,7 +19,7 @@
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
 #include "sensors/labels.h"
-#include "sim/random.h"
+#include "sim/base/random.h"
 #include "sim/simulation.h"
 
 namespace tactip {
