@@ -22,7 +22,7 @@
 namespace tactip {
 
 std::vector<int> GroupFolds(const std::vector<int>& group, int k) {
-  if (k < 1) throw DetectorInputError("cv_folds = " + std::to_string(k) + ": must be >= 1");
+  if (k < 1) throw InputError("cv_folds = " + std::to_string(k) + ": must be >= 1");
   // Sorted distinct groups go round-robin to the folds.
   const std::vector<int> distinct = [&] {
     std::vector<int> g(group);
@@ -40,8 +40,8 @@ std::vector<int> GroupFolds(const std::vector<int>& group, int k) {
 
 double F1Score(const std::vector<int>& truth, const std::vector<int>& pred) {
   if (truth.size() != pred.size()) {
-    throw DetectorInputError("F1: " + std::to_string(truth.size()) + " labels but " + std::to_string(pred.size()) +
-                             " predictions");
+    throw InputError("F1: " + std::to_string(truth.size()) + " labels but " + std::to_string(pred.size()) +
+                     " predictions");
   }
   long tp = 0, fp = 0, fn = 0;
   for (size_t i = 0; i < truth.size(); ++i) {
@@ -55,7 +55,7 @@ double F1Score(const std::vector<int>& truth, const std::vector<int>& pred) {
 }
 
 Standardizer Standardizer::Fit(const Eigen::MatrixXf& x) {
-  if (x.rows() == 0) throw DetectorInputError("cannot fit a standardizer on 0 rows");
+  if (x.rows() == 0) throw InputError("cannot fit a standardizer on 0 rows");
   const Eigen::Index n = x.rows(), d = x.cols();
   Standardizer s;
   s.mean.resize(d);
@@ -80,16 +80,16 @@ Standardizer Standardizer::Fit(const Eigen::MatrixXf& x) {
 
 void Standardizer::Apply(Eigen::VectorXf& x) const {
   if (x.size() != mean.size()) {
-    throw DetectorInputError("feature vector has " + std::to_string(x.size()) + " values, the standardizer " +
-                             std::to_string(mean.size()));
+    throw InputError("feature vector has " + std::to_string(x.size()) + " values, the standardizer " +
+                     std::to_string(mean.size()));
   }
   x.array() = (x.array() - mean.array()) * inv_std.array();
 }
 
 void Standardizer::ApplyRows(Eigen::MatrixXf& x) const {
   if (x.cols() != mean.size()) {
-    throw DetectorInputError("feature rows have " + std::to_string(x.cols()) + " columns, the standardizer " +
-                             std::to_string(mean.size()));
+    throw InputError("feature rows have " + std::to_string(x.cols()) + " columns, the standardizer " +
+                     std::to_string(mean.size()));
   }
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     x.row(i).array() = (x.row(i).array() - mean.transpose().array()) * inv_std.transpose().array();
@@ -98,8 +98,8 @@ void Standardizer::ApplyRows(Eigen::MatrixXf& x) const {
 
 CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCandidate>& grid,
                            const CvFitPredict& fit) {
-  if (grid.empty()) throw DetectorInputError("hyperparameter grid is empty");
-  if (k < 2) throw DetectorInputError("cv_folds = " + std::to_string(k) + ": must be >= 2");
+  if (grid.empty()) throw InputError("hyperparameter grid is empty");
+  if (k < 2) throw InputError("cv_folds = " + std::to_string(k) + ": must be >= 2");
   const int n = static_cast<int>(ts.y.size());
   const Eigen::Index d = ts.x.cols();
   CvReport report;
@@ -117,8 +117,8 @@ CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCan
       report.grid.emplace_back(grid[0].c, grid[0].gamma, nan);
       return report;
     }
-    throw DetectorInputError("grouped cross-validation needs at least 2 runs; the training set has " +
-                             std::to_string(n_groups));
+    throw InputError("grouped cross-validation needs at least 2 runs; the training set has " +
+                     std::to_string(n_groups));
   }
   const int folds = std::min(k, n_groups);
   report.folds = folds;
@@ -197,31 +197,31 @@ CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCan
 void CheckTrainingSet(const TrainingSet& ts) {
   const size_t n = ts.y.size();
   if (static_cast<size_t>(ts.x.rows()) != n || ts.group.size() != n) {
-    throw DetectorInputError("training set has " + std::to_string(ts.x.rows()) + " feature rows, " +
-                             std::to_string(n) + " labels and " + std::to_string(ts.group.size()) + " groups");
+    throw InputError("training set has " + std::to_string(ts.x.rows()) + " feature rows, " +
+                     std::to_string(n) + " labels and " + std::to_string(ts.group.size()) + " groups");
   }
-  if (n == 0) throw DetectorInputError("training set is empty: no frames were selected");
-  if (ts.x.cols() == 0) throw DetectorInputError("training set has no feature columns");
-  if (!ts.x.allFinite()) throw DetectorInputError("training set has non-finite feature values");
+  if (n == 0) throw InputError("training set is empty: no frames were selected");
+  if (ts.x.cols() == 0) throw InputError("training set has no feature columns");
+  if (!ts.x.allFinite()) throw InputError("training set has non-finite feature values");
   long slip = 0;
   for (size_t i = 0; i < n; ++i) {
     if (ts.y[i] != 0 && ts.y[i] != 1) {
-      throw DetectorInputError("training set label " + std::to_string(ts.y[i]) + " in row " + std::to_string(i) +
-                               ": must be 0 (static) or 1 (slip)");
+      throw InputError("training set label " + std::to_string(ts.y[i]) + " in row " + std::to_string(i) +
+                       ": must be 0 (static) or 1 (slip)");
     }
     slip += ts.y[i];
   }
   const size_t runs = std::set<int>(ts.group.begin(), ts.group.end()).size();
   const std::string where = std::to_string(n) + " rows from " + std::to_string(runs) + " runs";
-  if (slip == 0) throw DetectorInputError("training set has no slip frames: " + where + " (do the runs have an onset?)");
-  if (slip == static_cast<long>(n)) throw DetectorInputError("training set has no static frames: " + where);
+  if (slip == 0) throw InputError("training set has no slip frames: " + where + " (do the runs have an onset?)");
+  if (slip == static_cast<long>(n)) throw InputError("training set has no static frames: " + where);
 }
 
 void CheckPositiveGrid(const std::vector<double>& values, std::string_view what) {
-  if (values.empty()) throw DetectorInputError(std::string(what) + " is empty: needs at least one value");
+  if (values.empty()) throw InputError(std::string(what) + " is empty: needs at least one value");
   for (double v : values) {
     if (!std::isfinite(v) || v <= 0.0) {
-      throw DetectorInputError(std::string(what) + " value " + RoundTripText(v) + ": must be finite and > 0");
+      throw InputError(std::string(what) + " value " + RoundTripText(v) + ": must be finite and > 0");
     }
   }
 }
@@ -239,7 +239,7 @@ ModelTextReader::ModelTextReader(std::string text, std::string path, int line_of
 
 void ModelTextReader::Fail(const std::string& problem) const {
   const std::string line = line_no_ > 0 ? "line " + std::to_string(line_no_) + ": " : "";
-  throw DetectorInputError("model '" + path_ + "': " + line + problem);
+  throw InputError("model '" + path_ + "': " + line + problem);
 }
 
 std::string ModelTextReader::ReadLine(std::string_view expected) {
@@ -342,7 +342,7 @@ FeatureSet ModelTextReader::ReadFeatures() {
   const std::string name = ExpectKey("features", 1)[0];
   try {
     return ParseFeatureSet(name);
-  } catch (const DetectorInputError& e) {
+  } catch (const InputError& e) {
     Fail(e.what());
   }
 }
@@ -357,27 +357,6 @@ int ModelTextReader::ReadDim() {
   const int dim = ParseInt(ExpectKey("dim", 1)[0], "dim");
   if (dim < 1 || dim > 1000000) Fail("dim must be in [1, 1000000]");
   return dim;
-}
-
-TempFile::TempFile() {
-  std::error_code ec;
-  std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
-  if (ec) dir = "/tmp";
-  std::string pattern = (dir / "tactip-model-XXXXXX").string();
-  const int fd = ::mkstemp(pattern.data());
-  if (fd < 0) throw DetectorInputError("cannot create a temporary file in '" + dir.string() + "': " + std::strerror(errno));
-  ::close(fd);
-  path_ = pattern;
-}
-
-TempFile::~TempFile() { std::remove(path_.c_str()); }
-
-void TempFile::Write(const std::string& text, const std::string& model_path) const {
-  std::ofstream out(path_, std::ios::binary | std::ios::trunc);
-  out << text;
-  if (!out.flush()) {
-    throw DetectorInputError("model '" + model_path + "': cannot write temporary file '" + path_ + "'");
-  }
 }
 
 }  // namespace tactip

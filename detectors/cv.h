@@ -17,12 +17,12 @@ namespace tactip {
 
 /// Assigns every row to one of k folds by its group (run): the distinct groups, sorted
 /// ascending, go round-robin to folds 0, 1, ..., k-1, so all frames of one run share a fold.
-/// Deterministic. Returns the fold of each row. Throws DetectorInputError unless k >= 1.
+/// Deterministic. Returns the fold of each row. Throws InputError unless k >= 1.
 /// With fewer distinct groups than k, the folds past the number of groups stay empty.
 std::vector<int> GroupFolds(const std::vector<int>& group, int k);
 
 /// F1 of the positive class (label 1): 2 tp / (2 tp + fp + fn); 0 when nothing is positive
-/// in either vector (undefined). Throws DetectorInputError if the sizes differ.
+/// in either vector (undefined). Throws InputError if the sizes differ.
 double F1Score(const std::vector<int>& truth, const std::vector<int>& pred);
 
 /// Per-feature affine scaling to zero mean and unit variance, fitted on training rows.
@@ -31,10 +31,10 @@ struct Standardizer {
   Eigen::VectorXf inv_std;  ///< 1 / population standard deviation; 1 for constant columns
 
   /// Fits on the rows of `x` (statistics in double). A column whose values are all equal
-  /// (or whose 1/std overflows a float) gets inv_std = 1. Throws DetectorInputError if `x`
+  /// (or whose 1/std overflows a float) gets inv_std = 1. Throws InputError if `x`
   /// has no rows.
   static Standardizer Fit(const Eigen::MatrixXf& x);
-  /// x <- (x - mean) * inv_std, in place, no allocation. Throws DetectorInputError on a
+  /// x <- (x - mean) * inv_std, in place, no allocation. Throws InputError on a
   /// dimension mismatch.
   void Apply(Eigen::VectorXf& x) const;
   /// Applies the scaling to every row of `x` in place (same arithmetic as Apply).
@@ -75,18 +75,18 @@ using CvFitPredict = std::function<std::vector<std::vector<int>>(
 /// training rows hold one class only, its test rows are predicted as that class. Folds run in
 /// parallel (at most min(folds, hardware threads)); the result does not depend on the thread
 /// count. With a single candidate and fewer than 2 runs CV is skipped (best_f1 = NaN). Throws
-/// DetectorInputError if k < 2 or the training set has fewer than 2 runs while the grid has
+/// InputError if k < 2 or the training set has fewer than 2 runs while the grid has
 /// several candidates, and propagates errors of `fit`.
 CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCandidate>& grid,
                            const CvFitPredict& fit);
 
 /// Checks a training set before fitting: consistent sizes, labels in {0, 1}, at least one
-/// feature column, finite features, and both classes present; throws DetectorInputError
+/// feature column, finite features, and both classes present; throws InputError
 /// ("training set has no slip frames: ...") otherwise.
 void CheckTrainingSet(const TrainingSet& ts);
 
 /// Checks a list of hyperparameter values (`what` names it, e.g. "c_grid"): non-empty,
-/// finite and > 0; throws DetectorInputError naming the list and the bad value.
+/// finite and > 0; throws InputError naming the list and the bad value.
 void CheckPositiveGrid(const std::vector<double>& values, std::string_view what);
 
 // ---- Model-file helpers shared by the trained detectors ---------------------------------
@@ -96,7 +96,7 @@ void CheckPositiveGrid(const std::vector<double>& values, std::string_view what)
 void AppendStandardizer(const Standardizer& s, std::string& out);
 
 /// Reads the "key values..." lines of a detector model file, one at a time, and turns every
-/// problem into DetectorInputError("model 'PATH': line L: <problem>").
+/// problem into InputError("model 'PATH': line L: <problem>").
 class ModelTextReader {
  public:
   /// Reads `text` (copied): the whole file, or a part of it that starts after line
@@ -134,7 +134,7 @@ class ModelTextReader {
   std::string Rest() const;
   /// 1-based number of the last line read.
   int line_number() const { return line_no_; }
-  /// Throws DetectorInputError("model 'PATH': line L: problem") (no line part if none read).
+  /// Throws InputError("model 'PATH': line L: problem") (no line part if none read).
   [[noreturn]] void Fail(const std::string& problem) const;
 
  private:
@@ -142,27 +142,6 @@ class ModelTextReader {
   std::string path_;
   size_t pos_ = 0;
   int line_no_ = 0;
-};
-
-/// A unique empty file in the temporary directory (mkstemp), removed by the destructor;
-/// used to pass model text through libsvm / liblinear, which only read and write files.
-class TempFile {
- public:
-  /// Creates the file; throws DetectorInputError if it cannot.
-  TempFile();
-  /// Removes the file (ignoring errors).
-  ~TempFile();
-  /// Not copyable: owns the file.
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  /// Path of the file.
-  const std::string& path() const { return path_; }
-  /// Replaces the file's contents with `text`; throws DetectorInputError naming the
-  /// model file `model_path` if it cannot.
-  void Write(const std::string& text, const std::string& model_path) const;
-
- private:
-  std::string path_;
 };
 
 }  // namespace tactip

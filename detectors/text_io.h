@@ -1,6 +1,6 @@
 #pragma once
-// Small text-file helpers for model files (detectors depend on nothing but Eigen and
-// the ML libraries, so they carry their own).
+// Small text helpers for model files: reading, exact number text and strict parsing
+// (writing goes through the base layer's WriteFileAtomic).
 
 #include <charconv>
 #include <string>
@@ -8,11 +8,7 @@
 
 namespace tactip {
 
-/// Writes `text` to `path` through a temporary file and a rename; throws
-/// DetectorInputError naming the path if it cannot be written. No partial file remains.
-void WriteTextAtomic(const std::string& path, const std::string& text);
-
-/// Reads a whole file; throws DetectorInputError naming the path if it cannot be read.
+/// Reads a whole file; throws InputError naming the path if it cannot be read.
 std::string ReadText(const std::string& path);
 
 /// Shortest decimal text that reads back as exactly `v` (std::to_chars).

@@ -10,15 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "detectors/detector.h"
 #include "scenarios/cli/accuracy_command.h"
 #include "scenarios/cli/detect_commands.h"
 #include "scenarios/cli/scenario_commands.h"
 #include "scenarios/cli/stability_commands.h"
 #include "scenarios/cli/study_commands.h"
 #include "scenarios/rail.h"
-#include "sim/config.h"
-#include "sim/simulation.h"
+#include "sim/base/errors.h"
 #include "tactip/version.h"
 
 namespace {
@@ -38,9 +36,6 @@ int Dispatch(const std::vector<std::function<int()>>& runners) {
     }
     return 0;
   } catch (const tactip::InputError& e) {
-    std::fprintf(stderr, "tactip: %s\n", e.what());
-    return 2;
-  } catch (const tactip::DetectorInputError& e) {
     std::fprintf(stderr, "tactip: %s\n", e.what());
     return 2;
   } catch (const tactip::ModelError& e) {
