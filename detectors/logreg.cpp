@@ -10,6 +10,7 @@
 #include <limits>
 #include <utility>
 
+#include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
 #include "sim/base/temp_file.h"

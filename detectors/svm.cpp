@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
 #include "sim/base/temp_file.h"

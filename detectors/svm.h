@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "detectors/cv.h"
+#include "detectors/crossval.h"
 #include "detectors/detector.h"
 
 namespace tactip {

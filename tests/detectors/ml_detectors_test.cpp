@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "detectors/cv.h"
+#include "detectors/crossval.h"
 #include "detectors/logreg.h"
 #include "detectors/svm.h"
 #include "detectors/text_io.h"
