@@ -1,4 +1,4 @@
-#include "scenarios/bench.h"
+#include "scenarios/detector_bench.h"
 
 #include <cmath>
 #include <filesystem>
