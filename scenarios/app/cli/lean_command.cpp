@@ -1,4 +1,4 @@
-#include "scenarios/cli/lean_command.h"
+#include "scenarios/app/cli/lean_command.h"
 
 #include <cstdio>
 #include <filesystem>

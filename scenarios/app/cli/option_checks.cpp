@@ -1,4 +1,4 @@
-#include "scenarios/cli/option_checks.h"
+#include "scenarios/app/cli/option_checks.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "scenarios/cli/study_commands.h"
+#include "scenarios/app/cli/study_commands.h"
 
 #include <chrono>
 #include <cstdio>
@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/cli/common.h"
-#include "scenarios/cli/option_checks.h"
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/common.h"
+#include "scenarios/app/cli/option_checks.h"
+#include "scenarios/app/cli/output_checks.h"
 #include "scenarios/contact_checks.h"
 #include "scenarios/incipient_report.h"
 #include "scenarios/sweep.h"

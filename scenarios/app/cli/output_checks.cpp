@@ -1,4 +1,4 @@
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/output_checks.h"
 
 #include <fmt/format.h>
 

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/cli/accuracy_command.h"
-#include "scenarios/cli/detect_commands.h"
-#include "scenarios/cli/scenario_commands.h"
-#include "scenarios/cli/stability_commands.h"
-#include "scenarios/cli/study_commands.h"
+#include "scenarios/app/cli/accuracy_command.h"
+#include "scenarios/app/cli/detect_commands.h"
+#include "scenarios/app/cli/scenario_commands.h"
+#include "scenarios/app/cli/stability_commands.h"
+#include "scenarios/app/cli/study_commands.h"
 #include "scenarios/rail.h"
 #include "sim/base/errors.h"
 #include "tactip/version.h"
