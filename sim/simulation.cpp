@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <chrono>
 #include <mutex>
@@ -22,17 +20,19 @@ namespace {
 // counters in mjData are checked after every step instead.
 void SilentWarning(const char*) {}
 
-// MuJoCo's errors are fatal to the process; say so on one line and exit non-zero.
-void FatalError(const char* msg) {
-  std::fprintf(stderr, "tactip: MuJoCo internal error: %s\n", msg);
-  std::exit(3);
-}
+// MuJoCo calls this on an internal error (e.g. its solver stack overflows) and ends the
+// process if it returns. It throws instead: the exception unwinds through MuJoCo's C frames
+// (libmujoco is built with unwind tables; they run no cleanup), so callers above clean up
+// (temporary files) and report it. The mjData MuJoCo was working on is left mid-step: the
+// Simulation that threw must not be stepped again. The compiler inside mj_loadXML installs
+// its own thread-local handler, so compile errors still come back as mj_loadXML's text.
+void InternalError(const char* msg) { throw SimulationError(fmt::format("MuJoCo internal error: {}", msg)); }
 
 void InstallHandlers() {
   static std::once_flag once;
   std::call_once(once, [] {
     mju_user_warning = SilentWarning;
-    mju_user_error = FatalError;
+    mju_user_error = InternalError;
   });
 }
 

@@ -98,7 +98,8 @@ class Simulation {
   /// Sets one actuator's control input.
   void SetControl(int actuator, double value);
   /// Advances one timestep; throws SimulationError on BADQACC/BADQPOS/BADQVEL (NaN or
-  /// reset state), CONTACTFULL or CNSTRFULL (silently dropped constraints).
+  /// reset state), CONTACTFULL or CNSTRFULL (silently dropped constraints), and on a MuJoCo
+  /// internal error ("MuJoCo internal error: ..."), after which this Simulation is unusable.
   void Step();
   /// Runs forward kinematics and contacts without advancing time (for the initial state).
   void Forward();

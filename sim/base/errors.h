@@ -19,7 +19,8 @@ class ModelError : public std::runtime_error {
 };
 
 /// Thrown when a run becomes numerically invalid (NaN, reset state, dropped contacts);
-/// the message names the warning, the simulated time and what to change.
+/// the message names the warning, the simulated time and what to change. Also thrown for
+/// MuJoCo's internal errors ("MuJoCo internal error: ..."), which would otherwise end the process.
 class SimulationError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
