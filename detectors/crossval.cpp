@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "detectors/text_io.h"
+#include "sim/base/number_text.h"
 
 namespace tactip {
 

@@ -13,6 +13,7 @@
 #include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
+#include "sim/base/number_text.h"
 #include "sim/base/temp_file.h"
 
 namespace tactip {

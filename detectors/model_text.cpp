@@ -2,11 +2,10 @@
 
 #include "detectors/model_text.h"
 
-#include <charconv>
 #include <cmath>
 #include <utility>
 
-#include "detectors/text_io.h"
+#include "sim/base/number_text.h"
 
 namespace tactip {
 
@@ -68,9 +67,7 @@ std::vector<std::string> ModelTextReader::ExpectKey(std::string_view key, int n_
 
 double ModelTextReader::ParseDouble(const std::string& token, std::string_view what) const {
   double v = 0.0;
-  const char* end = token.data() + token.size();
-  const auto res = std::from_chars(token.data(), end, v);
-  if (res.ec != std::errc() || res.ptr != end || !std::isfinite(v)) {
+  if (!ParseWhole(token, v) || !std::isfinite(v)) {
     Fail(std::string(what) + " '" + token.substr(0, 40) + "' is not a finite number");
   }
   return v;
@@ -78,9 +75,7 @@ double ModelTextReader::ParseDouble(const std::string& token, std::string_view w
 
 float ModelTextReader::ParseFloat(const std::string& token, std::string_view what) const {
   float v = 0.0f;
-  const char* end = token.data() + token.size();
-  const auto res = std::from_chars(token.data(), end, v);
-  if (res.ec != std::errc() || res.ptr != end || !std::isfinite(v)) {
+  if (!ParseWhole(token, v) || !std::isfinite(v)) {
     Fail(std::string(what) + " '" + token.substr(0, 40) + "' is not a finite number");
   }
   return v;
@@ -88,9 +83,7 @@ float ModelTextReader::ParseFloat(const std::string& token, std::string_view wha
 
 int ModelTextReader::ParseInt(const std::string& token, std::string_view what) const {
   int v = 0;
-  const char* end = token.data() + token.size();
-  const auto res = std::from_chars(token.data(), end, v);
-  if (res.ec != std::errc() || res.ptr != end) Fail(std::string(what) + " '" + token.substr(0, 40) + "' is not an integer");
+  if (!ParseWhole(token, v)) Fail(std::string(what) + " '" + token.substr(0, 40) + "' is not an integer");
   return v;
 }
 

@@ -12,7 +12,6 @@
 #include <utility>
 
 #include "detectors/detector.h"
-#include "detectors/text_io.h"
 #include "sim/base/files.h"
 
 namespace tactip {

@@ -12,6 +12,7 @@
 
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
+#include "sim/base/number_text.h"
 
 namespace tactip {
 namespace {
