@@ -12,15 +12,9 @@
 #include <Eigen/Core>
 
 #include "detectors/pin_frame.h"
+#include "sim/base/errors.h"
 
 namespace tactip {
-
-/// Thrown for unusable detector input (bad model file, inconsistent frames, bad CSV);
-/// the message is one line naming the file or frame and the problem.
-class DetectorInputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// One per-frame decision.
 struct Decision {
@@ -42,12 +36,12 @@ class Detector {
   /// Consumes the next frame and returns the decision for it. The first frame after
   /// Reset() has no velocity and is never a slip.
   virtual Decision Update(const PinFrame& frame) = 0;
-  /// Writes the trained model to a text file (atomically); throws DetectorInputError if
+  /// Writes the trained model to a text file (atomically); throws InputError if
   /// it cannot be written.
   virtual void Save(const std::string& path) const = 0;
 };
 
-/// Loads any model written by Detector::Save; throws DetectorInputError naming the file
+/// Loads any model written by Detector::Save; throws InputError naming the file
 /// on a missing, unreadable or corrupt model.
 std::unique_ptr<Detector> LoadDetector(const std::string& path);
 
@@ -59,7 +53,7 @@ enum class FeatureSet {
 };
 /// "drdtheta", "dr", "dtheta".
 std::string ToString(FeatureSet f);
-/// Parses the names above; throws DetectorInputError otherwise.
+/// Parses the names above; throws InputError otherwise.
 FeatureSet ParseFeatureSet(const std::string& s);
 
 /// Streaming pin-velocity features. Velocity of pin i = p_i(t) - p_i(t-1) in pixels;
@@ -74,7 +68,7 @@ class VelocityFeatures {
   /// Forgets the previous frame.
   void Reset();
   /// Consumes a frame. Returns false for the first frame (no velocity yet); otherwise
-  /// fills `out` with Dim(set, N) values. Throws DetectorInputError if N changes.
+  /// fills `out` with Dim(set, N) values. Throws InputError if N changes.
   bool Update(const PinFrame& frame, Eigen::VectorXf& out);
   /// Mean velocity vector over the pins with a velocity in the last Update (px/frame).
   const Eigen::Vector2f& mean_velocity() const { return mean_velocity_; }
@@ -135,7 +129,7 @@ struct TrainingSet {
 /// Streams every run's frames through VelocityFeatures(opts.features) and calls
 /// `visit(run, features, feature_vector, slip)` for each selected training frame: static
 /// frames from first_frame up to the onset, kept with probability static_fraction (one
-/// seeded draw per static frame), and the n_slip slip frames. Throws DetectorInputError
+/// seeded draw per static frame), and the n_slip slip frames. Throws InputError
 /// for n_slip outside [1, 15] or static_fraction outside (0, 1].
 void ForEachTrainingFrame(
     const std::vector<LabeledRun>& runs, const TrainOptions& opts,

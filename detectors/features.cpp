@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "detectors/detector.h"
+#include "sim/base/random.h"
 
 namespace tactip {
 
@@ -22,7 +22,7 @@ FeatureSet ParseFeatureSet(const std::string& s) {
   if (s == "drdtheta") return FeatureSet::kDrDtheta;
   if (s == "dr") return FeatureSet::kDr;
   if (s == "dtheta") return FeatureSet::kDtheta;
-  throw DetectorInputError("features '" + s + "': must be one of drdtheta, dr, dtheta");
+  throw InputError("features '" + s + "': must be one of drdtheta, dr, dtheta");
 }
 
 int VelocityFeatures::Dim(FeatureSet set, int n_pins) { return set == FeatureSet::kDrDtheta ? 2 * n_pins : n_pins; }
@@ -35,8 +35,8 @@ void VelocityFeatures::Reset() {
 bool VelocityFeatures::Update(const PinFrame& frame, Eigen::VectorXf& out) {
   const int n = frame.size();
   if (has_prev_ && prev_.size() != n) {
-    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
-                             " pins, the previous frame " + std::to_string(prev_.size()));
+    throw InputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
+                     " pins, the previous frame " + std::to_string(prev_.size()));
   }
   if (!has_prev_) {
     prev_ = frame;
@@ -105,12 +105,12 @@ void ForEachTrainingFrame(
     const std::vector<LabeledRun>& runs, const TrainOptions& opts,
     const std::function<void(const LabeledRun&, const VelocityFeatures&, const Eigen::VectorXf&, bool)>& visit) {
   if (opts.n_slip < 1 || opts.n_slip > 15) {
-    throw DetectorInputError("n_slip = " + std::to_string(opts.n_slip) + ": must be in [1, 15]");
+    throw InputError("n_slip = " + std::to_string(opts.n_slip) + ": must be in [1, 15]");
   }
   if (!(opts.static_fraction > 0.0 && opts.static_fraction <= 1.0)) {
-    throw DetectorInputError("static fraction = " + std::to_string(opts.static_fraction) + ": must be in (0, 1]");
+    throw InputError("static fraction = " + std::to_string(opts.static_fraction) + ": must be in (0, 1]");
   }
-  std::mt19937_64 gen(opts.seed);
+  Rng gen(opts.seed);
   for (const LabeledRun& run : runs) {
     // Stream every frame (features need the previous one), keep the labelled window.
     VelocityFeatures feat(opts.features);
@@ -121,8 +121,7 @@ void ForEachTrainingFrame(
       const bool slip = role == FrameRole::kSlip;
       // Seeded downsampling of static frames: draw for every static frame.
       if (!slip) {
-        const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;
-        if (u >= opts.static_fraction) continue;
+        if (gen.Uniform() >= opts.static_fraction) continue;
       }
       visit(run, feat, f, slip);
     }
@@ -141,7 +140,7 @@ TrainingSet BuildTrainingSet(const std::vector<LabeledRun>& runs, const TrainOpt
   const int dim = rows.empty() ? 0 : static_cast<int>(rows.front().size());
   ts.x.resize(static_cast<Eigen::Index>(rows.size()), dim);
   for (size_t r = 0; r < rows.size(); ++r) {
-    if (rows[r].size() != dim) throw DetectorInputError("runs have different pin counts");
+    if (rows[r].size() != dim) throw InputError("runs have different pin counts");
     ts.x.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
   }
   return ts;

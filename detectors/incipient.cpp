@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "detectors/text_io.h"
+#include "sim/base/files.h"
+#include "sim/base/number_text.h"
 
 namespace tactip {
 namespace {
@@ -19,13 +21,13 @@ constexpr const char* kHeader = "tactip-detector incipient 1";
 
 IncipientDetector::IncipientDetector(const IncipientParams& params) : params_(params) {
   if (params.window < 1 || params.window > 1000) {
-    throw DetectorInputError("window = " + std::to_string(params.window) + ": must be in [1, 1000]");
+    throw InputError("window = " + std::to_string(params.window) + ": must be in [1, 1000]");
   }
   if (!(params.speed_thr_px > 0.0) || !std::isfinite(params.speed_thr_px)) {
-    throw DetectorInputError("speed_thr_px = " + RoundTripText(params.speed_thr_px) + ": must be finite and > 0");
+    throw InputError("speed_thr_px = " + RoundTripText(params.speed_thr_px) + ": must be finite and > 0");
   }
   if (params.count_thr < 1 || params.count_thr > 1000000) {
-    throw DetectorInputError("count_thr = " + std::to_string(params.count_thr) + ": must be in [1, 1000000]");
+    throw InputError("count_thr = " + std::to_string(params.count_thr) + ": must be in [1, 1000000]");
   }
 }
 
@@ -41,12 +43,12 @@ void IncipientDetector::Reset() {
 Decision IncipientDetector::Update(const PinFrame& frame) {
   const int n = frame.size();
   if (!frame.valid.empty() && static_cast<int>(frame.valid.size()) != n) {
-    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
-                             " pins but " + std::to_string(frame.valid.size()) + " valid flags");
+    throw InputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
+                     " pins but " + std::to_string(frame.valid.size()) + " valid flags");
   }
   if (has_prev_ && n != n_pins_) {
-    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
-                             " pins, the previous frame " + std::to_string(n_pins_));
+    throw InputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
+                     " pins, the previous frame " + std::to_string(n_pins_));
   }
   Decision d;
   if (!has_prev_) {
@@ -135,7 +137,7 @@ void IncipientDetector::Save(const std::string& path) const {
   text += "window " + std::to_string(params_.window) + "\n";
   text += "speed_thr_px " + RoundTripText(params_.speed_thr_px) + "\n";
   text += "count_thr " + std::to_string(params_.count_thr) + "\n";
-  WriteTextAtomic(path, text);
+  WriteFileAtomic(path, text);
 }
 
 std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& path) {
@@ -151,7 +153,7 @@ std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& pa
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (!have_header) {
       if (line != kHeader) {
-        throw DetectorInputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
+        throw InputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
       }
       have_header = true;
       continue;
@@ -161,7 +163,7 @@ std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& pa
     std::istringstream fields(line);
     std::string key, value, extra;
     if (!(fields >> key)) continue;
-    if (!(fields >> value) || (fields >> extra)) throw DetectorInputError(at + "expected 'key value'");
+    if (!(fields >> value) || (fields >> extra)) throw InputError(at + "expected 'key value'");
     bool* seen = nullptr;
     bool ok = false;
     if (key == "window") {
@@ -174,20 +176,20 @@ std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& pa
       seen = &have_count;
       ok = ParseWhole(value, p.count_thr);
     } else {
-      throw DetectorInputError(at + "unknown key '" + key + "'");
+      throw InputError(at + "unknown key '" + key + "'");
     }
-    if (*seen) throw DetectorInputError(at + "duplicate " + key);
-    if (!ok) throw DetectorInputError(at + key + " '" + value + "' is not a number");
+    if (*seen) throw InputError(at + "duplicate " + key);
+    if (!ok) throw InputError(at + key + " '" + value + "' is not a number");
     *seen = true;
   }
-  if (!have_header) throw DetectorInputError(where + "empty file, expected '" + kHeader + "'");
-  if (!have_window) throw DetectorInputError(where + "missing window");
-  if (!have_speed) throw DetectorInputError(where + "missing speed_thr_px");
-  if (!have_count) throw DetectorInputError(where + "missing count_thr");
+  if (!have_header) throw InputError(where + "empty file, expected '" + kHeader + "'");
+  if (!have_window) throw InputError(where + "missing window");
+  if (!have_speed) throw InputError(where + "missing speed_thr_px");
+  if (!have_count) throw InputError(where + "missing count_thr");
   try {
     return std::make_unique<IncipientDetector>(p);
-  } catch (const DetectorInputError& e) {
-    throw DetectorInputError(where + e.what());
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
   }
 }
 

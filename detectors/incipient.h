@@ -37,17 +37,17 @@ struct IncipientParams {
 /// slipping set into the returned Decision.
 class IncipientDetector : public Detector {
  public:
-  /// Throws DetectorInputError naming the bad parameter ("window = 0: must be >= 1").
+  /// Throws InputError naming the bad parameter ("window = 0: must be >= 1").
   explicit IncipientDetector(const IncipientParams& params = {});
 
-  /// Reads a model written by Save; throws DetectorInputError("model 'PATH': ...") if corrupt.
+  /// Reads a model written by Save; throws InputError("model 'PATH': ...") if corrupt.
   static std::unique_ptr<IncipientDetector> Load(const std::string& path);
 
   /// "incipient".
   std::string name() const override { return "incipient"; }
   /// Forgets all history and empties the slipping set.
   void Reset() override;
-  /// Decision for the next frame; throws DetectorInputError if the pin count changes.
+  /// Decision for the next frame; throws InputError if the pin count changes.
   Decision Update(const PinFrame& frame) override;
   /// Writes "tactip-detector incipient 1" and the three parameters atomically.
   void Save(const std::string& path) const override;

@@ -10,7 +10,11 @@
 #include <limits>
 #include <utility>
 
+#include "detectors/model_text.h"
 #include "detectors/text_io.h"
+#include "sim/base/files.h"
+#include "sim/base/number_text.h"
+#include "sim/base/temp_file.h"
 
 namespace tactip {
 namespace {
@@ -64,7 +68,7 @@ LinearModelPtr TrainOne(NodeRows& rows, std::vector<double>& y, int dim, double 
   param.p = 0.1;
   param.init_sol = nullptr;
   if (const char* err = ::check_parameter(&prob, &param)) {
-    throw DetectorInputError(std::string("liblinear rejected the parameters: ") + err);
+    throw InputError(std::string("liblinear rejected the parameters: ") + err);
   }
   return LinearModelPtr(::train(&prob, &param));
 }
@@ -73,7 +77,7 @@ LinearModelPtr TrainOne(NodeRows& rows, std::vector<double>& y, int dim, double 
 std::string ModelText(const ::model* m) {
   const TempFile tmp;
   if (::save_model(tmp.path().c_str(), m) != 0) {
-    throw DetectorInputError("cannot write the liblinear model to '" + tmp.path() + "'");
+    throw InputError("cannot write the liblinear model to '" + tmp.path() + "'");
   }
   return ReadText(tmp.path());
 }
@@ -139,11 +143,11 @@ std::unique_ptr<LogRegDetector::Impl> LogRegDetector::MakeImpl(FeatureSet featur
   // Let liblinear read its model from a temporary file.
   {
     const TempFile tmp;
-    tmp.Write(m->liblinear_text, path);
+    tmp.Write(m->liblinear_text, "model '" + path + "'");
     SilenceLiblinear();
     m->model.reset(::load_model(tmp.path().c_str()));
   }
-  if (!m->model) throw DetectorInputError("model '" + path + "': liblinear could not read the embedded model");
+  if (!m->model) throw InputError("model '" + path + "': liblinear could not read the embedded model");
 
   // Per-frame node buffer with fixed indices.
   m->x.resize(dim);
@@ -170,9 +174,9 @@ Decision LogRegDetector::Update(const PinFrame& frame) {
   // Features (none for the first frame), checked against the model's dimension.
   if (!m.feat.Update(frame, m.x)) return d;
   if (m.x.size() != m.dim) {
-    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s gives " +
-                             std::to_string(m.x.size()) + " features; the logreg model expects " +
-                             std::to_string(m.dim));
+    throw InputError("frame at t = " + std::to_string(frame.time_s) + " s gives " +
+                     std::to_string(m.x.size()) + " features; the logreg model expects " +
+                     std::to_string(m.dim));
   }
   // Standardise into the node buffer and let liblinear decide.
   m.standardizer.Apply(m.x);
@@ -193,7 +197,7 @@ void LogRegDetector::Save(const std::string& path) const {
   AppendStandardizer(m.standardizer, text);
   text += "liblinear-model\n";
   text += m.liblinear_text;
-  WriteTextAtomic(path, text);
+  WriteFileAtomic(path, text);
 }
 
 std::unique_ptr<LogRegDetector> LogRegDetector::Load(const std::string& path) {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "detectors/cv.h"
+#include "detectors/crossval.h"
 #include "detectors/detector.h"
 
 namespace tactip {
@@ -17,10 +17,10 @@ namespace tactip {
 class LogRegDetector final : public Detector {
  public:
   /// Trains on `ts` (rows from BuildTrainingSet with opts.features); C from opts.c_grid by
-  /// GroupedGridSearch with opts.cv_folds. Throws DetectorInputError on an unusable set
+  /// GroupedGridSearch with opts.cv_folds. Throws InputError on an unusable set
   /// ("training set has no slip frames: ...") or bad options.
   static std::unique_ptr<LogRegDetector> Train(const TrainingSet& ts, const TrainOptions& opts);
-  /// Reads a model written by Save; throws DetectorInputError naming `path` if it is
+  /// Reads a model written by Save; throws InputError naming `path` if it is
   /// missing, unreadable or corrupt.
   static std::unique_ptr<LogRegDetector> Load(const std::string& path);
   /// Parses the text of a model file (as Load does after reading it); `path` names it in errors.
@@ -38,11 +38,11 @@ class LogRegDetector final : public Detector {
   void Reset() override;
   /// Features -> standardise -> liblinear decision value f. slip = predicted label is 1;
   /// score = f oriented so that > 0 means slip (the log-odds of slip). The first frame after
-  /// Reset is never a slip. Allocates nothing. Throws DetectorInputError if the frame's pin
+  /// Reset is never a slip. Allocates nothing. Throws InputError if the frame's pin
   /// count does not fit dim().
   Decision Update(const PinFrame& frame) override;
   /// Writes "tactip-detector logreg 1", the parameters, the standardizer and the liblinear
-  /// model text, atomically; throws DetectorInputError if it cannot.
+  /// model text, atomically; throws InputError if it cannot.
   void Save(const std::string& path) const override;
 
   /// Feature variant the model was trained on.

@@ -30,7 +30,7 @@ Confusion& Confusion::operator+=(const Confusion& o) {
 }
 
 Evaluation Evaluate(Detector& det, const std::vector<LabeledRun>& runs, int n_slip) {
-  if (n_slip < 1) throw DetectorInputError("n_slip = " + std::to_string(n_slip) + ": must be >= 1");
+  if (n_slip < 1) throw InputError("n_slip = " + std::to_string(n_slip) + ": must be >= 1");
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   Evaluation ev;
   ev.detector = det.name();
@@ -43,8 +43,8 @@ Evaluation Evaluate(Detector& det, const std::vector<LabeledRun>& runs, int n_sl
   int n_delays = 0, n_with_onset = 0;
   for (const LabeledRun& run : runs) {
     if (!(run.frame_rate_hz > 0.0) || !std::isfinite(run.frame_rate_hz)) {
-      throw DetectorInputError("run " + std::to_string(run.run) + ": frame rate " + std::to_string(run.frame_rate_hz) +
-                               " Hz: must be > 0");
+      throw InputError("run " + std::to_string(run.run) + ": frame rate " + std::to_string(run.frame_rate_hz) +
+                       " Hz: must be > 0");
     }
     RunEvaluation re;
     re.run = run.run;

@@ -62,7 +62,7 @@ struct Evaluation {
 /// static (all frames >= first_frame when the run has no onset) and onset <= k <
 /// onset + n_slip as slip; later frames are streamed but not scored. The detection
 /// frame is the first frame >= onset declared slip, searched to the end of the run.
-/// Throws DetectorInputError if n_slip < 1 or a frame rate is not > 0 (and passes on
+/// Throws InputError if n_slip < 1 or a frame rate is not > 0 (and passes on
 /// the detector's errors).
 Evaluation Evaluate(Detector& det, const std::vector<LabeledRun>& runs, int n_slip);
 

@@ -18,13 +18,13 @@ std::unique_ptr<Detector> LoadDetector(const std::string& path) {
   std::string magic, name;
   in >> magic >> name;
   if (magic != "tactip-detector") {
-    throw DetectorInputError("model '" + path + "': not a tactip detector model (first word '" + magic + "')");
+    throw InputError("model '" + path + "': not a tactip detector model (first word '" + magic + "')");
   }
   if (name == "threshold") return ThresholdDetector::Load(path);
   if (name == "incipient") return IncipientDetector::Load(path);
   if (name == "svm-linear" || name == "svm-rbf") return SvmDetector::Load(path);
   if (name == "logreg") return LogRegDetector::Load(path);
-  throw DetectorInputError("model '" + path + "': unknown detector '" + name + "'");
+  throw InputError("model '" + path + "': unknown detector '" + name + "'");
 }
 
 }  // namespace tactip

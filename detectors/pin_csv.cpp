@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "detectors/detector.h"
-#include "detectors/text_io.h"
+#include "sim/base/files.h"
 
 namespace tactip {
 namespace {
@@ -28,8 +28,8 @@ struct Row {
 };
 
 /// Error naming the file and the line.
-DetectorInputError LineError(const std::string& path, long line, const std::string& what) {
-  return DetectorInputError("pin CSV '" + path + "' line " + std::to_string(line) + ": " + what);
+InputError LineError(const std::string& path, long line, const std::string& what) {
+  return InputError("pin CSV '" + path + "' line " + std::to_string(line) + ": " + what);
 }
 
 /// Text `s` without surrounding spaces, tabs and carriage returns.
@@ -76,7 +76,7 @@ void AppendNumber(std::string& out, T v) {
 
 std::vector<PinFrame> ReadPinCsv(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw DetectorInputError("pin CSV '" + path + "': cannot open: " + std::strerror(errno));
+  if (!in) throw InputError("pin CSV '" + path + "': cannot open: " + std::strerror(errno));
 
   // Header (an optional UTF-8 byte-order mark first).
   std::string line;
@@ -90,7 +90,7 @@ std::vector<PinFrame> ReadPinCsv(const std::string& path) {
       break;
     }
   }
-  if (!have_header_line) throw DetectorInputError("pin CSV '" + path + "': empty file");
+  if (!have_header_line) throw InputError("pin CSV '" + path + "': empty file");
   std::vector<std::string_view> f;
   Split(line, f);
   static constexpr std::string_view kColumns[] = {"frame", "time_s", "pin", "x_px", "y_px", "valid"};
@@ -218,14 +218,14 @@ std::vector<PinFrame> ReadPinCsv(const std::string& path) {
     seen[pin] = 1;
     rows.push_back({pin, static_cast<float>(x), static_cast<float>(y), valid});
   }
-  if (in.bad()) throw DetectorInputError("pin CSV '" + path + "': read error");
+  if (in.bad()) throw InputError("pin CSV '" + path + "': read error");
   if (!in_frame) throw LineError(path, line_no, "empty file: no data rows after the header");
   close_frame();
   return frames;
 }
 
 void WritePinCsv(const std::string& path, const std::vector<PinFrame>& frames) {
-  const auto fail = [&](const std::string& what) { return DetectorInputError("pin CSV '" + path + "': " + what); };
+  const auto fail = [&](const std::string& what) { return InputError("pin CSV '" + path + "': " + what); };
   if (frames.empty()) throw fail("no frames to write");
   const int n = frames.front().size();
   if (n == 0) throw fail("frame 0 has no pins");
@@ -257,7 +257,7 @@ void WritePinCsv(const std::string& path, const std::vector<PinFrame>& frames) {
       text += (pf.valid.empty() || pf.valid[i]) ? ",1\n" : ",0\n";
     }
   }
-  WriteTextAtomic(path, text);
+  WriteFileAtomic(path, text);
 }
 
 }  // namespace tactip

@@ -19,7 +19,7 @@
 
 namespace tactip {
 
-/// Reads a pin CSV. Throws DetectorInputError (one line naming the file and the line
+/// Reads a pin CSV. Throws InputError (one line naming the file and the line
 /// number) on a missing or empty file, a bad header, a wrong field count, a non-numeric
 /// or non-finite field, a frame whose pin count differs from the first frame's, a
 /// duplicate or missing pin index, frame numbers that do not increase, or time_s that
@@ -27,7 +27,7 @@ namespace tactip {
 std::vector<PinFrame> ReadPinCsv(const std::string& path);
 
 /// Writes frames as a pin CSV with a `valid` column, frames numbered 0.., values with
-/// round-trip precision, atomically. Throws DetectorInputError naming the file if the
+/// round-trip precision, atomically. Throws InputError naming the file if the
 /// frames could not be read back (no frames, no pins, pin counts differ, non-finite
 /// values, time not strictly increasing) or the file cannot be written.
 void WritePinCsv(const std::string& path, const std::vector<PinFrame>& frames);

@@ -47,7 +47,7 @@ std::string CheckCounts(int n_frames, int n_sensors_required, int n_sensors_tota
 ResponseStrategy::ResponseStrategy(int n_frames, int n_sensors_required, int n_sensors_total)
     : n_frames_(n_frames), n_sensors_required_(n_sensors_required), n_sensors_total_(n_sensors_total) {
   const std::string why = CheckCounts(n_frames, n_sensors_required, n_sensors_total);
-  if (!why.empty()) throw DetectorInputError("response strategy: " + why);
+  if (!why.empty()) throw InputError("response strategy: " + why);
   streak_.assign(n_sensors_total, 0);
 }
 
@@ -56,16 +56,16 @@ ResponseStrategy ResponseStrategy::Parse(const std::string& s, int n_sensors_tot
   int n_frames = 0, n_sensors = 0;
   const bool ok = ReadCount(s, pos, n_frames) && ReadWord(s, pos, "fr") && ReadCount(s, pos, n_sensors) &&
                   ReadWord(s, pos, "sen") && pos == s.size();
-  if (!ok) throw DetectorInputError("response strategy '" + s + "': expected <NFr>Fr<NSen>Sen, e.g. 2Fr1Sen");
+  if (!ok) throw InputError("response strategy '" + s + "': expected <NFr>Fr<NSen>Sen, e.g. 2Fr1Sen");
   const std::string why = CheckCounts(n_frames, n_sensors, n_sensors_total);
-  if (!why.empty()) throw DetectorInputError("response strategy '" + s + "': " + why);
+  if (!why.empty()) throw InputError("response strategy '" + s + "': " + why);
   return ResponseStrategy(n_frames, n_sensors, n_sensors_total);
 }
 
 bool ResponseStrategy::Update(const std::vector<bool>& per_sensor_slip) {
   if (static_cast<int>(per_sensor_slip.size()) != n_sensors_total_) {
-    throw DetectorInputError("response strategy " + ToString() + ": got " + std::to_string(per_sensor_slip.size()) +
-                             " sensor decisions, expected " + std::to_string(n_sensors_total_));
+    throw InputError("response strategy " + ToString() + ": got " + std::to_string(per_sensor_slip.size()) +
+                     " sensor decisions, expected " + std::to_string(n_sensors_total_));
   }
   // Extend or break each sensor's streak, then count the sensors whose streak is long enough.
   int agreeing = 0;
@@ -92,8 +92,8 @@ double ContactMeasure::Update(const PinFrame& frame) {
   }
   const int n = frame.size();
   if (n != ref_.size()) {
-    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
-                             " pins, the reference frame " + std::to_string(ref_.size()));
+    throw InputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
+                     " pins, the reference frame " + std::to_string(ref_.size()));
   }
   // Mean displacement from the reference over the pins detected in both frames.
   double sum = 0.0;
@@ -112,7 +112,7 @@ double ContactMeasure::Update(const PinFrame& frame) {
 ResponseDetector::ResponseDetector(std::unique_ptr<Detector> inner, ResponseStrategy strategy)
     : inner_(std::move(inner)), strategy_(strategy), one_(1, false) {
   if (strategy_.n_sensors_total() != 1) {
-    throw DetectorInputError("response " + strategy_.ToString() + ": a single-sensor detector needs NSen = 1");
+    throw InputError("response " + strategy_.ToString() + ": a single-sensor detector needs NSen = 1");
   }
 }
 

@@ -15,15 +15,15 @@ namespace tactip {
 /// that frame. Does not latch: a broken streak must be rebuilt.
 class ResponseStrategy {
  public:
-  /// Throws DetectorInputError unless n_frames >= 1 and 1 <= n_sensors_required <= n_sensors_total.
+  /// Throws InputError unless n_frames >= 1 and 1 <= n_sensors_required <= n_sensors_total.
   ResponseStrategy(int n_frames, int n_sensors_required, int n_sensors_total);
 
   /// Parses "<NFr>Fr<NSen>Sen" (e.g. "2Fr1Sen"; "fr"/"sen" in any case); throws
-  /// DetectorInputError naming the string if malformed or NSen > n_sensors_total.
+  /// InputError naming the string if malformed or NSen > n_sensors_total.
   static ResponseStrategy Parse(const std::string& s, int n_sensors_total);
 
   /// Consumes one frame of per-sensor decisions (size n_sensors_total, else
-  /// DetectorInputError); true when the strategy fires in this frame.
+  /// InputError); true when the strategy fires in this frame.
   bool Update(const std::vector<bool>& per_sensor_slip);
   /// Clears every streak.
   void Reset();
@@ -51,7 +51,7 @@ class ContactMeasure {
   /// Forgets the reference frame.
   void Reset();
   /// Consumes a frame and returns d(t): 0 for the reference frame itself and when no pin
-  /// is detected in both frames. Throws DetectorInputError if the pin count changes.
+  /// is detected in both frames. Throws InputError if the pin count changes.
   double Update(const PinFrame& frame);
   /// True once a reference frame has been seen.
   bool has_reference() const { return has_ref_; }

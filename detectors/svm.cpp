@@ -13,7 +13,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include "detectors/model_text.h"
 #include "detectors/text_io.h"
+#include "sim/base/files.h"
+#include "sim/base/number_text.h"
+#include "sim/base/temp_file.h"
 
 namespace tactip {
 namespace {
@@ -83,7 +87,7 @@ SvmModelPtr TrainOne(NodeRows& rows, std::vector<double>& y, const svm_parameter
   prob.y = y.data();
   prob.x = rows.rows.data();
   if (const char* err = svm_check_parameter(&prob, &param)) {
-    throw DetectorInputError(std::string("libsvm rejected the parameters: ") + err);
+    throw InputError(std::string("libsvm rejected the parameters: ") + err);
   }
   return SvmModelPtr(svm_train(&prob, &param));
 }
@@ -94,7 +98,7 @@ std::string ModelText(const svm_model* model) {
   {
     const std::lock_guard lock(LibsvmFileMutex());
     if (svm_save_model(tmp.path().c_str(), model) != 0) {
-      throw DetectorInputError("cannot write the libsvm model to '" + tmp.path() + "'");
+      throw InputError("cannot write the libsvm model to '" + tmp.path() + "'");
     }
   }
   return ReadText(tmp.path());
@@ -231,12 +235,12 @@ std::unique_ptr<SvmDetector::Impl> SvmDetector::MakeImpl(Kernel kernel, FeatureS
   // Let libsvm read its model from a temporary file.
   {
     const TempFile tmp;
-    tmp.Write(m->libsvm_text, path);
+    tmp.Write(m->libsvm_text, "model '" + path + "'");
     SilenceLibsvm();
     const std::lock_guard lock(LibsvmFileMutex());
     m->model.reset(svm_load_model(tmp.path().c_str()));
   }
-  if (!m->model) throw DetectorInputError("model '" + path + "': libsvm could not read the embedded model");
+  if (!m->model) throw InputError("model '" + path + "': libsvm could not read the embedded model");
   const svm_model& sm = *m->model;
 
   // Dense copies of the support vectors, coefficients and offset.
@@ -293,9 +297,9 @@ Decision SvmDetector::Update(const PinFrame& frame) {
   // Features (none for the first frame), checked against the model's dimension.
   if (!m.feat.Update(frame, m.x)) return d;
   if (m.x.size() != m.dim) {
-    throw DetectorInputError("frame at t = " + std::to_string(frame.time_s) + " s gives " +
-                             std::to_string(m.x.size()) + " features; the " + name() + " model expects " +
-                             std::to_string(m.dim));
+    throw InputError("frame at t = " + std::to_string(frame.time_s) + " s gives " +
+                     std::to_string(m.x.size()) + " features; the " + name() + " model expects " +
+                     std::to_string(m.dim));
   }
   // Standardise and evaluate; libsvm predicts label[0] when f > 0.
   m.standardizer.Apply(m.x);
@@ -317,7 +321,7 @@ void SvmDetector::Save(const std::string& path) const {
   AppendStandardizer(m.standardizer, text);
   text += "libsvm-model\n";
   text += m.libsvm_text;
-  WriteTextAtomic(path, text);
+  WriteFileAtomic(path, text);
 }
 
 std::unique_ptr<SvmDetector> SvmDetector::Load(const std::string& path) { return FromText(ReadText(path), path); }

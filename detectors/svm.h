@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "detectors/cv.h"
+#include "detectors/crossval.h"
 #include "detectors/detector.h"
 
 namespace tactip {
@@ -25,10 +25,10 @@ class SvmDetector final : public Detector {
 
   /// Trains on `ts` (rows from BuildTrainingSet with opts.features). Candidates: C in
   /// opts.c_grid and, for RBF, gamma = g / dim for g in opts.gamma_scale_grid (dim = feature
-  /// dimension), searched by GroupedGridSearch with opts.cv_folds. Throws DetectorInputError
+  /// dimension), searched by GroupedGridSearch with opts.cv_folds. Throws InputError
   /// on an unusable set ("training set has no slip frames: ...") or bad options.
   static std::unique_ptr<SvmDetector> Train(const TrainingSet& ts, Kernel kernel, const TrainOptions& opts);
-  /// Reads a model written by Save; throws DetectorInputError naming `path` if it is
+  /// Reads a model written by Save; throws InputError naming `path` if it is
   /// missing, unreadable or corrupt.
   static std::unique_ptr<SvmDetector> Load(const std::string& path);
   /// Parses the text of a model file (as Load does after reading it); `path` names it in errors.
@@ -46,10 +46,10 @@ class SvmDetector final : public Detector {
   void Reset() override;
   /// Features -> standardise -> decision value f. slip = libsvm's predicted label is 1;
   /// score = f oriented so that > 0 means slip. The first frame after Reset is never a slip.
-  /// Allocates nothing. Throws DetectorInputError if the frame's pin count does not fit dim().
+  /// Allocates nothing. Throws InputError if the frame's pin count does not fit dim().
   Decision Update(const PinFrame& frame) override;
   /// Writes "tactip-detector svm-rbf 1" (or svm-linear), the parameters, the standardizer
-  /// and the libsvm model text, atomically; throws DetectorInputError if it cannot.
+  /// and the libsvm model text, atomically; throws InputError if it cannot.
   void Save(const std::string& path) const override;
 
   /// Kernel of the model.

@@ -1,31 +1,12 @@
 #pragma once
-// Small text-file helpers for model files (detectors depend on nothing but Eigen and
-// the ML libraries, so they carry their own).
+// Reading a whole text file (model files, pin CSVs); writing goes through the base layer's
+// WriteFileAtomic, number text through sim/base/number_text.h.
 
-#include <charconv>
 #include <string>
-#include <system_error>
 
 namespace tactip {
 
-/// Writes `text` to `path` through a temporary file and a rename; throws
-/// DetectorInputError naming the path if it cannot be written. No partial file remains.
-void WriteTextAtomic(const std::string& path, const std::string& text);
-
-/// Reads a whole file; throws DetectorInputError naming the path if it cannot be read.
+/// Reads a whole file; throws InputError naming the path if it cannot be read.
 std::string ReadText(const std::string& path);
-
-/// Shortest decimal text that reads back as exactly `v` (std::to_chars).
-std::string RoundTripText(double v);
-/// Shortest decimal text that reads back as exactly `v` (std::to_chars).
-std::string RoundTripText(float v);
-
-/// Parses the whole of `s` as a number of type T (std::from_chars); false on anything else.
-template <typename T>
-bool ParseWhole(const std::string& s, T& out) {
-  const char* end = s.data() + s.size();
-  const auto [p, ec] = std::from_chars(s.data(), end, out);
-  return ec == std::errc() && p == end;
-}
 
 }  // namespace tactip

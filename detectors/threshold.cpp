@@ -11,6 +11,8 @@
 #include <utility>
 
 #include "detectors/text_io.h"
+#include "sim/base/files.h"
+#include "sim/base/number_text.h"
 
 namespace tactip {
 namespace {
@@ -27,7 +29,7 @@ double F1Score(long tp, long fp, long fn) {
 
 ThresholdDetector::ThresholdDetector(double threshold_px) : threshold_px_(threshold_px) {
   if (!std::isfinite(threshold_px) || threshold_px < 0.0) {
-    throw DetectorInputError("threshold_px = " + RoundTripText(threshold_px) + ": must be finite and >= 0");
+    throw InputError("threshold_px = " + RoundTripText(threshold_px) + ": must be finite and >= 0");
   }
 }
 
@@ -42,7 +44,7 @@ Decision ThresholdDetector::Update(const PinFrame& frame) {
 }
 
 void ThresholdDetector::Save(const std::string& path) const {
-  WriteTextAtomic(path, std::string(kHeader) + "\nthreshold_px " + RoundTripText(threshold_px_) + "\n");
+  WriteFileAtomic(path, std::string(kHeader) + "\nthreshold_px " + RoundTripText(threshold_px_) + "\n");
 }
 
 std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& path) {
@@ -58,7 +60,7 @@ std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& pa
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (!have_header) {
       if (line != kHeader) {
-        throw DetectorInputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
+        throw InputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
       }
       have_header = true;
       continue;
@@ -68,24 +70,24 @@ std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& pa
     std::string key, value, extra;
     if (!(fields >> key)) continue;
     if (!(fields >> value) || (fields >> extra)) {
-      throw DetectorInputError(where + "line " + std::to_string(line_no) + ": expected 'key value'");
+      throw InputError(where + "line " + std::to_string(line_no) + ": expected 'key value'");
     }
     if (key != "threshold_px") {
-      throw DetectorInputError(where + "line " + std::to_string(line_no) + ": unknown key '" + key + "'");
+      throw InputError(where + "line " + std::to_string(line_no) + ": unknown key '" + key + "'");
     }
-    if (have_t) throw DetectorInputError(where + "line " + std::to_string(line_no) + ": duplicate threshold_px");
+    if (have_t) throw InputError(where + "line " + std::to_string(line_no) + ": duplicate threshold_px");
     if (!ParseWhole(value, t)) {
-      throw DetectorInputError(where + "line " + std::to_string(line_no) + ": threshold_px '" + value +
-                               "' is not a number");
+      throw InputError(where + "line " + std::to_string(line_no) + ": threshold_px '" + value +
+                       "' is not a number");
     }
     have_t = true;
   }
-  if (!have_header) throw DetectorInputError(where + "empty file, expected '" + kHeader + "'");
-  if (!have_t) throw DetectorInputError(where + "missing threshold_px");
+  if (!have_header) throw InputError(where + "empty file, expected '" + kHeader + "'");
+  if (!have_t) throw InputError(where + "missing threshold_px");
   try {
     return std::make_unique<ThresholdDetector>(t);
-  } catch (const DetectorInputError& e) {
-    throw DetectorInputError(where + e.what());
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
   }
 }
 
@@ -100,9 +102,9 @@ std::unique_ptr<ThresholdDetector> ThresholdDetector::Train(const std::vector<La
     samples.emplace_back(static_cast<double>(feat.mean_velocity().norm()), slip ? 1 : 0);
     n_pos += slip ? 1 : 0;
   });
-  if (n_pos == 0) throw DetectorInputError("threshold training: the selected frames hold no slip frame");
+  if (n_pos == 0) throw InputError("threshold training: the selected frames hold no slip frame");
   for (const auto& [v, label] : samples) {
-    if (!std::isfinite(v)) throw DetectorInputError("threshold training: a frame has a non-finite pin velocity");
+    if (!std::isfinite(v)) throw InputError("threshold training: a frame has a non-finite pin velocity");
   }
 
   // Sweep T upward over the sorted distinct values. Candidate j puts T at the lowest

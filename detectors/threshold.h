@@ -14,14 +14,14 @@ namespace tactip {
 /// Slip when v = |mean_i (dx_i, dy_i)| >= T (pixels per frame); score = v.
 class ThresholdDetector : public Detector {
  public:
-  /// Uses threshold `threshold_px` (px/frame); throws DetectorInputError unless finite and >= 0.
+  /// Uses threshold `threshold_px` (px/frame); throws InputError unless finite and >= 0.
   explicit ThresholdDetector(double threshold_px);
 
   /// Chooses T maximising F1 over the frames BuildTrainingSet would select (same rules,
-  /// same seeded downsampling); ties go to the smaller T. Throws DetectorInputError on bad
+  /// same seeded downsampling); ties go to the smaller T. Throws InputError on bad
   /// options or when the selection holds no slip frame.
   static std::unique_ptr<ThresholdDetector> Train(const std::vector<LabeledRun>& runs, const TrainOptions& opts);
-  /// Reads a model written by Save; throws DetectorInputError("model 'PATH': ...") if corrupt.
+  /// Reads a model written by Save; throws InputError("model 'PATH': ...") if corrupt.
   static std::unique_ptr<ThresholdDetector> Load(const std::string& path);
 
   /// "threshold".

@@ -1,14 +1,12 @@
 #include "models/mjcf.h"
 
-#include <charconv>
+#include "sim/base/number_text.h"
 
 namespace tactip::mjcf {
 
 std::string Num(double v) {
   if (v == 0.0) return "0";  // also folds -0
-  char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, res.ptr);
+  return RoundTripText(v);
 }
 
 Element& Element::Set(const std::string& name, const std::string& value) {

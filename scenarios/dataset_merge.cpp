@@ -9,7 +9,7 @@
 #include "scenarios/rail/rail_scenario.h"
 #include "sensors/dataset.h"
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip {
 

@@ -24,7 +24,7 @@ std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vect
 
 /// Reads pin frames from the project's HDF5 datasets or from a real-TacTip CSV
 /// recording (by extension: .h5/.hdf5 or .csv). CSV input is one run (index 0) with no
-/// ground truth. Throws InputError / DetectorInputError naming the file and problem.
+/// ground truth. Throws InputError naming the file and problem.
 std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs);
 
 }  // namespace tactip

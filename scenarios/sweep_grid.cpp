@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 #include <set>
 
+#include "sim/base/number_text.h"
 #include "sim/config.h"
 
 namespace tactip {
@@ -41,10 +41,7 @@ InputError SpecError(const std::string& spec, const std::string& problem) {
 /// One part of a range: a finite number, nothing else.
 double RangeNumber(const std::string& spec, const std::string& text, const char* what) {
   double v = 0.0;
-  const char* b = text.data();
-  const char* e = b + text.size();
-  const auto res = std::from_chars(b, e, v);
-  if (text.empty() || res.ec != std::errc() || res.ptr != e || !std::isfinite(v)) {
+  if (!ParseWhole(text, v) || !std::isfinite(v)) {
     throw SpecError(spec, fmt::format("range {} '{}' is not a number", what, Printable(text)));
   }
   return v;

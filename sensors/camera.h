@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "sim/config.h"
-#include "sim/random.h"
+#include "sim/base/random.h"
 
 namespace tactip {
 

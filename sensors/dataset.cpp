@@ -19,7 +19,7 @@
 #include "sensors/hdf5_discard.h"
 #include "sensors/run_checks.h"
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip {
 namespace {

@@ -1,6 +1,6 @@
 #include "sensors/friction_law.h"
 
-#include "sim/random.h"
+#include "sim/base/random.h"
 
 namespace tactip {
 

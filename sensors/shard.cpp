@@ -1,25 +1,13 @@
 #include "sensors/shard.h"
 
-#include <charconv>
 #include <cstdint>
 
 #include <fmt/format.h>
 
+#include "sim/base/number_text.h"
 #include "sim/config.h"
 
 namespace tactip {
-
-namespace {
-
-/// Parses a whole decimal integer (optional leading '-'); false if `s` is anything else.
-bool ParseInt(const std::string& s, long long& out) {
-  if (s.empty()) return false;
-  const char* end = s.data() + s.size();
-  const auto [ptr, ec] = std::from_chars(s.data(), end, out);
-  return ec == std::errc() && ptr == end;
-}
-
-}  // namespace
 
 int ShardSpec::first_run() const {
   return static_cast<int>(static_cast<std::int64_t>(index) * runs_total / count);
@@ -44,7 +32,7 @@ std::string ParseShard(const std::string& text, int runs_total, ShardSpec& out) 
   // Shape first: two integers around one slash.
   const size_t slash = text.find('/');
   long long i = 0, n = 0;
-  if (slash == std::string::npos || !ParseInt(text.substr(0, slash), i) || !ParseInt(text.substr(slash + 1), n)) {
+  if (slash == std::string::npos || !ParseWhole(text.substr(0, slash), i) || !ParseWhole(text.substr(slash + 1), n)) {
     return "expected i/n, two integers with 0 <= i < n (e.g. 0/4)";
   }
   // Then the rules, one message each.

@@ -4,13 +4,14 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "sim/base/number_text.h"
 
 namespace tactip {
 
@@ -36,9 +37,7 @@ namespace config_detail {
 
 std::string FormatReal(double v) {
   // Shortest text that parses back to the same double.
-  char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, res.ptr);
+  return RoundTripText(v);
 }
 
 namespace {
@@ -85,10 +84,7 @@ std::string Escaped(std::string_view text) {
 
 double ParseReal(const std::string& key, const std::string& text) {
   double v = 0.0;
-  const char* b = text.data();
-  const char* e = b + text.size();
-  auto res = std::from_chars(b, e, v);
-  if (res.ec != std::errc() || res.ptr != e || text.empty()) {
+  if (!ParseWhole(text, v)) {
     throw InputError(Escaped(key) + " = '" + Escaped(text) + "': not a number");
   }
   return v;
@@ -96,10 +92,7 @@ double ParseReal(const std::string& key, const std::string& text) {
 
 long long ParseInt(const std::string& key, const std::string& text) {
   long long v = 0;
-  const char* b = text.data();
-  const char* e = b + text.size();
-  auto res = std::from_chars(b, e, v);
-  if (res.ec != std::errc() || res.ptr != e || text.empty()) {
+  if (!ParseWhole(text, v)) {
     throw InputError(Escaped(key) + " = '" + Escaped(text) + "': not an integer");
   }
   return v;

@@ -20,14 +20,9 @@
 #include <utility>
 #include <vector>
 
-namespace tactip {
+#include "sim/base/errors.h"
 
-/// Thrown for invalid user input (config values, files, command-line arguments); the
-/// message is one line a user can act on.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace tactip {
 
 /// Allowed interval of a numeric config field; open or closed at either end.
 struct Bounds {

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip {
 

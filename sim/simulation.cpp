@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <chrono>
 #include <mutex>
@@ -26,17 +24,19 @@ std::atomic<int> g_warnings_raised{0};
 // counters in mjData are checked after every step instead. The hook only counts.
 void SilentWarning(const char*) { g_warnings_raised.fetch_add(1, std::memory_order_relaxed); }
 
-// MuJoCo's errors are fatal to the process; say so on one line and exit non-zero.
-void FatalError(const char* msg) {
-  std::fprintf(stderr, "tactip: MuJoCo internal error: %s\n", msg);
-  std::exit(3);
-}
+// MuJoCo calls this on an internal error (e.g. its solver stack overflows) and ends the
+// process if it returns. It throws instead: the exception unwinds through MuJoCo's C frames
+// (libmujoco is built with unwind tables; they run no cleanup), so callers above clean up
+// (temporary files) and report it. The mjData MuJoCo was working on is left mid-step: the
+// Simulation that threw must not be stepped again. The compiler inside mj_loadXML installs
+// its own thread-local handler, so compile errors still come back as mj_loadXML's text.
+void InternalError(const char* msg) { throw SimulationError(fmt::format("MuJoCo internal error: {}", msg)); }
 
 void InstallHandlers() {
   static std::once_flag once;
   std::call_once(once, [] {
     mju_user_warning = SilentWarning;
-    mju_user_error = FatalError;
+    mju_user_error = InternalError;
   });
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/base/errors.h"
 #include "sim/friction_plane.h"
 #include "sim/step_profile.h"
 #include "sim/friction_pass.h"
@@ -17,20 +18,6 @@ struct mjModel_;
 struct mjData_;
 
 namespace tactip {
-
-
-/// Thrown when an MJCF text does not compile or a named element is missing.
-class ModelError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-/// Thrown when a run becomes numerically invalid (NaN, reset state, dropped contacts);
-/// the message names the warning, the simulated time and what to change.
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// Warnings MuJoCo has sent to its warning hook in this process so far: from any model or
 /// mjData, stepped by a Simulation or not. MuJoCo 2.2.2 sends a kind of warning only the
@@ -117,7 +104,8 @@ class Simulation {
   /// Sets one actuator's control input.
   void SetControl(int actuator, double value);
   /// Advances one timestep; throws SimulationError on BADQACC/BADQPOS/BADQVEL (NaN or
-  /// reset state), CONTACTFULL or CNSTRFULL (silently dropped constraints).
+  /// reset state), CONTACTFULL or CNSTRFULL (silently dropped constraints), and on a MuJoCo
+  /// internal error ("MuJoCo internal error: ..."), after which this Simulation is unusable.
   void Step();
   /// Runs forward kinematics and contacts without advancing time (for the initial state).
   void Forward();

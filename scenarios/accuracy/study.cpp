@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "scenarios/accuracy/compare.h"
-#include "scenarios/validate.h"
+#include "scenarios/contact_checks.h"
 #include "sim/simulation.h"
 
 namespace tactip {

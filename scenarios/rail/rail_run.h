@@ -23,7 +23,7 @@
 #include "sensors/friction_law.h"
 #include "sensors/tactile_sensor.h"
 #include "sensors/labels.h"
-#include "sim/random.h"
+#include "sim/base/random.h"
 #include "sim/simulation.h"
 
 namespace tactip {

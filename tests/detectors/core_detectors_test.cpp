@@ -98,12 +98,12 @@ std::vector<PinFrame> StillThenSlide(int n_still, int n_slide, float slip_px, do
 
 
 
-/// The message of the DetectorInputError thrown by `f`, or "" if none is thrown.
+/// The message of the InputError thrown by `f`, or "" if none is thrown.
 template <typename F>
 std::string ErrorOf(F&& f) {
   try {
     f();
-  } catch (const DetectorInputError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "";
@@ -196,7 +196,7 @@ TEST(VelocityFeaturesTest, PinCountChangeThrows) {
   Eigen::VectorXf out;
   feat.Update(Frame(Lattice19(), 0.0), out);
   const Eigen::Matrix<float, Eigen::Dynamic, 2> fewer = Lattice19().topRows(18);
-  EXPECT_THROW(feat.Update(Frame(fewer, 0.01), out), DetectorInputError);
+  EXPECT_THROW(feat.Update(Frame(fewer, 0.01), out), InputError);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -228,9 +228,9 @@ TEST(ThresholdTest, FirstFrameIsNeverSlip) {
 }
 
 TEST(ThresholdTest, RejectsNegativeOrNonFiniteThreshold) {
-  EXPECT_THROW(ThresholdDetector(-0.1), DetectorInputError);
-  EXPECT_THROW(ThresholdDetector(std::nan("")), DetectorInputError);
-  EXPECT_THROW(ThresholdDetector(std::numeric_limits<double>::infinity()), DetectorInputError);
+  EXPECT_THROW(ThresholdDetector(-0.1), InputError);
+  EXPECT_THROW(ThresholdDetector(std::nan("")), InputError);
+  EXPECT_THROW(ThresholdDetector(std::numeric_limits<double>::infinity()), InputError);
 }
 
 /// Noise-free run: still frames (v = 0) and then a slide of `slip_px` per frame.
@@ -326,10 +326,10 @@ TEST(ThresholdTest, TrainWithoutSlipFramesThrows) {
   LabeledRun r = CleanRun(0, 2.0f);
   r.onset_frame = -1;
   r.frames.resize(20);
-  EXPECT_THROW(ThresholdDetector::Train({r}, TrainOptions{}), DetectorInputError);
+  EXPECT_THROW(ThresholdDetector::Train({r}, TrainOptions{}), InputError);
   TrainOptions bad;
   bad.n_slip = 0;
-  EXPECT_THROW(ThresholdDetector::Train({CleanRun(0, 2.0f)}, bad), DetectorInputError);
+  EXPECT_THROW(ThresholdDetector::Train({CleanRun(0, 2.0f)}, bad), InputError);
 }
 
 TEST(ThresholdTest, SaveLoadRoundTripGivesIdenticalDecisions) {
@@ -541,7 +541,7 @@ TEST(IncipientTest, PinCountChangeThrows) {
   IncipientDetector det;
   det.Update(Frame(Lattice19(), 0.0));
   const Eigen::Matrix<float, Eigen::Dynamic, 2> fewer = Lattice19().topRows(18);
-  EXPECT_THROW(det.Update(Frame(fewer, 0.01)), DetectorInputError);
+  EXPECT_THROW(det.Update(Frame(fewer, 0.01)), InputError);
   // A new run may use another sensor.
   det.Reset();
   EXPECT_NO_THROW(det.Update(Frame(fewer, 0.02)));
@@ -634,12 +634,12 @@ TEST(ResponseStrategyTest, ParseReadsCountsAndRejectsBadStrings) {
     const std::string msg = ErrorOf([&] { ResponseStrategy::Parse(bad, 3); });
     EXPECT_NE(msg.find("response strategy '" + bad + "'"), std::string::npos) << "'" << bad << "': " << msg;
   }
-  EXPECT_THROW(ResponseStrategy(1, 2, 1), DetectorInputError);
+  EXPECT_THROW(ResponseStrategy(1, 2, 1), InputError);
 }
 
 TEST(ResponseStrategyTest, WrongNumberOfSensorDecisionsThrows) {
   ResponseStrategy r(1, 1, 2);
-  EXPECT_THROW(r.Update({true}), DetectorInputError);
+  EXPECT_THROW(r.Update({true}), InputError);
 }
 
 TEST(ContactMeasureTest, MeanDisplacementFromTheFirstFrame) {
@@ -665,7 +665,7 @@ TEST(ContactMeasureTest, MeanDisplacementFromTheFirstFrame) {
   cm.Reset();
   EXPECT_EQ(cm.Update(now), 0.0);
   EXPECT_NEAR(cm.Update(now), 0.0, kExact);
-  EXPECT_THROW(cm.Update(Frame(base.topRows(5), 0.02)), DetectorInputError);
+  EXPECT_THROW(cm.Update(Frame(base.topRows(5), 0.02)), InputError);
 }
 
 TEST(ResponseDetectorTest, TwoFrameStrategyDelaysTheActionByOneFrame) {
@@ -685,7 +685,7 @@ TEST(ResponseDetectorTest, TwoFrameStrategyDelaysTheActionByOneFrame) {
     EXPECT_EQ(b, k >= 11 && k <= 12) << "frame " << k;
   }
   EXPECT_THROW(ResponseDetector(std::make_unique<ThresholdDetector>(0.5), ResponseStrategy::Parse("1Fr2Sen", 3)),
-               DetectorInputError);
+               InputError);
 }
 
 }  // namespace

@@ -172,8 +172,8 @@ TEST(EvaluateTest, AggregatesWithoutDataAreNaN) {
 
 TEST(EvaluateTest, RejectsBadSlipWindowAndFrameRate) {
   ScriptedDetector det(std::vector<std::vector<int>>(2));
-  EXPECT_THROW(Evaluate(det, {MakeRun(0, 5, 0, 2, 100.0)}, 0), DetectorInputError);
-  EXPECT_THROW(Evaluate(det, {MakeRun(0, 5, 0, 2, 0.0)}, 4), DetectorInputError);
+  EXPECT_THROW(Evaluate(det, {MakeRun(0, 5, 0, 2, 100.0)}, 0), InputError);
+  EXPECT_THROW(Evaluate(det, {MakeRun(0, 5, 0, 2, 0.0)}, 4), InputError);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "detectors/cv.h"
+#include "detectors/crossval.h"
 #include "detectors/logreg.h"
 #include "detectors/svm.h"
 #include "detectors/text_io.h"
@@ -129,13 +129,13 @@ std::vector<Decision> Stream(Detector& det, const LabeledRun& run) {
 
 
 
-/// Expects `fn` to throw DetectorInputError whose message contains every fragment.
+/// Expects `fn` to throw InputError whose message contains every fragment.
 template <typename Fn>
 void ExpectInputError(Fn fn, const std::vector<std::string>& fragments) {
   try {
     fn();
-    ADD_FAILURE() << "no DetectorInputError thrown; expected '" << fragments.front() << "'";
-  } catch (const DetectorInputError& e) {
+    ADD_FAILURE() << "no InputError thrown; expected '" << fragments.front() << "'";
+  } catch (const InputError& e) {
     for (const std::string& frag : fragments) {
       EXPECT_NE(std::string(e.what()).find(frag), std::string::npos) << "message: " << e.what() << "\nmissing: " << frag;
     }

@@ -28,11 +28,11 @@ std::string WriteCsv(const std::string& name, const std::string& text) {
   return path;
 }
 
-/// The message of the DetectorInputError thrown by ReadPinCsv(path), or "" if none.
+/// The message of the InputError thrown by ReadPinCsv(path), or "" if none.
 std::string ReadError(const std::string& path) {
   try {
     ReadPinCsv(path);
-  } catch (const DetectorInputError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "";
@@ -144,9 +144,9 @@ TEST(PinCsvTest, WriterRefusesFramesTheReaderWouldReject) {
   b.time_s = 0.01;
   b.pos_px.resize(2, 2);
   const std::string path = TempPath("w.csv");
-  EXPECT_THROW(WritePinCsv(path, {}), DetectorInputError);
-  EXPECT_THROW(WritePinCsv(path, {a, b}), DetectorInputError);  // pin count changes
-  EXPECT_THROW(WritePinCsv(path, {a, a}), DetectorInputError);  // time does not increase
+  EXPECT_THROW(WritePinCsv(path, {}), InputError);
+  EXPECT_THROW(WritePinCsv(path, {a, b}), InputError);  // pin count changes
+  EXPECT_THROW(WritePinCsv(path, {a, a}), InputError);  // time does not increase
   EXPECT_NO_THROW(WritePinCsv(path, {a}));
   EXPECT_EQ(ReadPinCsv(path).size(), 1u);
 }

@@ -15,7 +15,7 @@
 
 #include "detectors/pin_csv.h"
 #include "cli_helpers.h"
-#include "scenarios/bench.h"
+#include "scenarios/detector_bench.h"
 #include "scenarios/slip_data.h"
 #include "sensors/dataset.h"
 #include "sim/config.h"

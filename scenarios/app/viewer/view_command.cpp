@@ -11,7 +11,7 @@
 #include "scenarios/app/viewer/rail_view_source.h"
 #include "scenarios/registry.h"
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 #include "sim/png_file.h"
 #include "sim/render.h"
 #include "sim/viewer_window.h"

@@ -1,4 +1,4 @@
-#include "scenarios/cli/run_commands.h"
+#include "scenarios/app/cli/run_commands.h"
 
 #include <chrono>
 #include <cstdio>
@@ -10,13 +10,13 @@
 
 #include <fmt/format.h>
 
-#include "scenarios/cli/common.h"
-#include "scenarios/cli/option_checks.h"
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/common.h"
+#include "scenarios/app/cli/option_checks.h"
+#include "scenarios/app/cli/output_checks.h"
 #include "scenarios/incipient_stop/stop_trials.h"
 #include "scenarios/rail_catch/catch_report.h"
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -1,9 +1,9 @@
-#include "scenarios/cli/lean_command.h"
+#include "scenarios/app/cli/lean_command.h"
 
 #include <cstdio>
 #include <filesystem>
 
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -1,4 +1,4 @@
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -15,7 +15,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "sim/config.h"
+#include "sim/base/errors.h"
 
 namespace tactip {
 

@@ -1,4 +1,4 @@
-#include "scenarios/bench.h"
+#include "scenarios/detector_bench.h"
 
 #include <cmath>
 #include <filesystem>
@@ -12,7 +12,7 @@
 #include "detectors/svm.h"
 #include "detectors/threshold.h"
 #include "scenarios/slip_data.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip {
 

@@ -1,4 +1,4 @@
-#include "scenarios/cli/detect_commands.h"
+#include "scenarios/app/cli/detect_commands.h"
 
 #include <cmath>
 #include <filesystem>
@@ -16,14 +16,14 @@
 #include "detectors/response.h"
 #include "detectors/svm.h"
 #include "detectors/threshold.h"
-#include "scenarios/bench.h"
-#include "scenarios/cli/lean_command.h"
-#include "scenarios/cli/option_checks.h"
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/lean_command.h"
+#include "scenarios/app/cli/option_checks.h"
+#include "scenarios/app/cli/output_checks.h"
+#include "scenarios/detector_bench.h"
 #include "scenarios/slip_data.h"
 #include "scenarios/speed.h"
 #include "sensors/dataset.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -1,4 +1,4 @@
-#include "scenarios/cli/accuracy_command.h"
+#include "scenarios/app/cli/accuracy_command.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "scenarios/accuracy/study.h"
-#include "scenarios/cli/common.h"
-#include "scenarios/cli/option_checks.h"
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/common.h"
+#include "scenarios/app/cli/option_checks.h"
+#include "scenarios/app/cli/output_checks.h"
 #include "scenarios/plot.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

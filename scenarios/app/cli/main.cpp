@@ -10,17 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "detectors/detector.h"
+#include "scenarios/app/cli/accuracy_command.h"
+#include "scenarios/app/cli/detect_commands.h"
+#include "scenarios/app/cli/run_commands.h"
+#include "scenarios/app/cli/scenario_commands.h"
+#include "scenarios/app/cli/stability_commands.h"
+#include "scenarios/app/cli/study_commands.h"
 #include "scenarios/app/viewer/view_command.h"
-#include "scenarios/cli/accuracy_command.h"
-#include "scenarios/cli/detect_commands.h"
-#include "scenarios/cli/run_commands.h"
-#include "scenarios/cli/scenario_commands.h"
-#include "scenarios/cli/stability_commands.h"
-#include "scenarios/cli/study_commands.h"
 #include "scenarios/rail.h"
-#include "sim/config.h"
-#include "sim/simulation.h"
+#include "sim/base/errors.h"
 #include "tactip/version.h"
 
 namespace {
@@ -40,9 +38,6 @@ int Dispatch(const std::vector<std::function<int()>>& runners) {
     }
     return 0;
   } catch (const tactip::InputError& e) {
-    std::fprintf(stderr, "tactip: %s\n", e.what());
-    return 2;
-  } catch (const tactip::DetectorInputError& e) {
     std::fprintf(stderr, "tactip: %s\n", e.what());
     return 2;
   } catch (const tactip::ModelError& e) {

@@ -1,4 +1,4 @@
-#include "scenarios/validate.h"
+#include "scenarios/contact_checks.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "scenarios/cli/scenario_commands.h"
+#include "scenarios/app/cli/scenario_commands.h"
 
 #include <cstdio>
 #include <memory>
@@ -7,11 +7,11 @@
 
 #include <fmt/format.h>
 
-#include "scenarios/cli/common.h"
-#include "scenarios/cli/option_checks.h"
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/common.h"
+#include "scenarios/app/cli/option_checks.h"
+#include "scenarios/app/cli/output_checks.h"
 #include "scenarios/dataset_merge.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

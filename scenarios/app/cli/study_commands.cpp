@@ -1,4 +1,4 @@
-#include "scenarios/cli/study_commands.h"
+#include "scenarios/app/cli/study_commands.h"
 
 #include <chrono>
 #include <cstdio>
@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/cli/common.h"
-#include "scenarios/cli/option_checks.h"
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/common.h"
+#include "scenarios/app/cli/option_checks.h"
+#include "scenarios/app/cli/output_checks.h"
+#include "scenarios/contact_checks.h"
 #include "scenarios/incipient_report.h"
 #include "scenarios/sweep.h"
-#include "scenarios/validate.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 
@@ -62,7 +62,7 @@ bool RunDome(const DomeCheckOptions& d, const DomeCriteria& k, const std::string
 // membrane-coupled lattice (fingerprint-v2 unless --skin names another membrane skin) at
 // 1 ms, twice: with a 0.3 mm skin (membrane reach a third of the contact radius, the regime
 // of the continuum band) and as configured. Every config is checked before anything runs.
-int RunValidate(const ConfigArgs& c) {
+int RunContactChecks(const ConfigArgs& c) {
   const auto rail = LoadConfig<RailScenarioConfig>(c.config_path, c.sets);
   const DomeCheckOptions configured_dome = DomeOptions(c, {});
   const DomeCheckOptions continuum_dome = [&] {
@@ -217,7 +217,7 @@ std::function<int()> AddStudyCommands(CLI::App& app, const std::atomic<bool>* st
   auto* sweep = AddSweep(app, *a);
   auto* report = AddReport(app, *a);
   return [a, validate, sweep, report, stop]() -> int {
-    if (*validate) return RunValidate(a->config);
+    if (*validate) return RunContactChecks(a->config);
     if (*report) return RunReport(*a);
     if (*sweep) return RunSweepCommand(*a, stop);
     return -1;

@@ -1,4 +1,4 @@
-#include "scenarios/cli/common.h"
+#include "scenarios/app/cli/common.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "models/skin.h"
-#include "scenarios/cli/option_checks.h"
+#include "scenarios/app/cli/option_checks.h"
 
 namespace tactip::cli {
 

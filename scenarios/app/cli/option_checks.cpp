@@ -1,11 +1,12 @@
-#include "scenarios/cli/option_checks.h"
+#include "scenarios/app/cli/option_checks.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
 #include <fmt/format.h>
+
+#include "sim/base/number_text.h"
 
 namespace tactip::cli {
 
@@ -58,9 +59,7 @@ CLI::Option* AddSeedOption(CLI::App* c, unsigned long long& seed, const std::str
   const CLI::Validator whole(
       [](std::string& text) {
         std::uint64_t v = 0;
-        const char* end = text.data() + text.size();
-        const auto r = std::from_chars(text.data(), end, v);
-        if (text.empty() || r.ec != std::errc() || r.ptr != end) {
+        if (!ParseWhole(text, v)) {
           return fmt::format("'{}': must be a whole number from 0 to {}", text,
                              std::numeric_limits<std::uint64_t>::max());
         }

@@ -1,4 +1,4 @@
-#include "scenarios/cli/stability_commands.h"
+#include "scenarios/app/cli/stability_commands.h"
 
 #include <chrono>
 #include <cstdio>
@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/cli/option_checks.h"
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/option_checks.h"
+#include "scenarios/app/cli/output_checks.h"
 #include "scenarios/stability_suite.h"
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

@@ -1,9 +1,9 @@
-#include "scenarios/cli/output_checks.h"
+#include "scenarios/app/cli/output_checks.h"
 
 #include <fmt/format.h>
 
 #include "sim/config.h"
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 namespace tactip::cli {
 

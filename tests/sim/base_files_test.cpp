@@ -1,7 +1,7 @@
 // File output helpers: same-file detection through links, the writable-location check,
 // and the removal of temporary files left by processes that no longer run.
 
-#include "sim/files.h"
+#include "sim/base/files.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "dead_pid.h"
-#include "sim/config.h"
+#include "sim/base/errors.h"
 
 namespace tactip {
 namespace {

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "scenarios/contact_checks.h"
 #include "scenarios/rail.h"
-#include "scenarios/validate.h"
 #include "sim/simulation.h"
 
 namespace tactip {
