@@ -22,6 +22,7 @@ void CatchOptions::Validate() const {
   check("arm-response-ms", arm_response_ms, 0.0, 1000.0);
   check("catch-speed-mm-s", catch_speed_mm_s, 1.0, 500.0);
   check("hold-s", hold_s, 0.05, 5.0);
+  check("catch-extra-mm", catch_extra_mm, 0.0, 4.0);
   try {
     ResponseStrategy::Parse(response, 1);
   } catch (const std::exception& e) {
@@ -40,9 +41,9 @@ CatchController::CatchController(const RailSchedule& schedule, std::unique_ptr<D
 
 ArmTargets CatchController::Targets(double t) {
   // The protocol until the arm acts; then back in along the normal, at the catch speed, to
-  // the full press depth.
+  // the press depth (and catch_extra_mm past it).
   if (std::isnan(act_s_) || t < act_s_) return {schedule_.X(t), schedule_.Z(t)};
-  const double x = std::min(schedule_.press_dist, x_act_m_ + options_.catch_speed_mm_s * 1e-3 * (t - act_s_));
+  const double x = std::min(CatchX(), x_act_m_ + options_.catch_speed_mm_s * 1e-3 * (t - act_s_));
   return {x, schedule_.Z(t)};
 }
 
@@ -58,8 +59,10 @@ void CatchController::OnFrame(const FrameInput& input) {
   declared_s_ = input.time_s;
   act_s_ = declared_s_ + (options_.classify_ms + options_.arm_response_ms) * 1e-3;
   x_act_m_ = schedule_.X(act_s_);
-  back_in_s_ = act_s_ + std::max(0.0, schedule_.press_dist - x_act_m_) / (options_.catch_speed_mm_s * 1e-3);
+  back_in_s_ = act_s_ + std::max(0.0, CatchX() - x_act_m_) / (options_.catch_speed_mm_s * 1e-3);
 }
+
+double CatchController::CatchX() const { return schedule_.press_dist + options_.catch_extra_mm * 1e-3; }
 
 bool CatchController::Done(double t) const {
   // Over once the arm is back in and the object has been watched for hold_s.

@@ -21,6 +21,7 @@ struct CatchOptions {
   double classify_ms = 3.0;          ///< classification time per frame (hardware: 3 ms)
   double arm_response_ms = 10.0;     ///< from the command to the arm moving
   double catch_speed_mm_s = 50.0;    ///< speed of the arm moving back in
+  double catch_extra_mm = 0.0;       ///< how far past the press depth the arm moves back in
   double hold_s = 0.5;               ///< after the arm is back in: how long the trial watches the object
 
   /// Throws InputError naming the option and its allowed range.
@@ -46,6 +47,7 @@ class CatchController : public RailController {
   double act_s() const { return act_s_; }
 
  private:
+  double CatchX() const;  // where the arm moves back in to (m)
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   const RailSchedule schedule_;
   std::unique_ptr<Detector> detector_;

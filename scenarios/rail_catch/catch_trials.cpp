@@ -77,7 +77,12 @@ std::vector<CatchTrial> RunCatchTrials(const RailScenarioConfig& cfg, const Catc
   // Long enough after a fall for the arm to come back in and the object to be watched.
   RailScenarioConfig c = cfg;
   c.rail.post_fall_s = std::max(c.rail.post_fall_s, 2.0);
-  const RailScenario scenario(c);
+  // Every pin carries a contact geom: the lean scene leaves out those that cannot reach the
+  // stimulus where it is held, but a caught object has slid along the rail (on a curved
+  // stimulus, onto pins lower on the dome) and the arm may press deeper to catch it.
+  SceneOptions every_pin;
+  every_pin.all_pins_collide = true;
+  const RailScenario scenario(c, every_pin);
   // One controller per trial, each with its own copy of the detector.
   const ControllerFactory make = [&](int, const RailSchedule& schedule) -> std::unique_ptr<RailController> {
     return std::make_unique<CatchController>(schedule, LoadDetector(opts.model_path), opts.loop);

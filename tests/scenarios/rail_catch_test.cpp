@@ -136,6 +136,9 @@ TEST(CatchOptionsTest, EveryRefusalNamesTheOption) {
   o = CatchOptions{};
   o.catch_speed_mm_s = 0.0;
   EXPECT_NE(InputErrorOf([&] { o.Validate(); }).find("--catch-speed-mm-s"), std::string::npos);
+  o = CatchOptions{};
+  o.catch_extra_mm = 5.0;
+  EXPECT_NE(InputErrorOf([&] { o.Validate(); }).find("--catch-extra-mm = 5: must be in [0, 4]"), std::string::npos);
 }
 
 }  // namespace

@@ -162,6 +162,9 @@ CLI::App* AddRailCatch(CLI::App* run, CatchArgs& a) {
       ->check(FiniteNumber());
   c->add_option("--catch-speed-mm-s", a.loop.catch_speed_mm_s, "Speed of the arm moving back in (default 50).")
       ->check(FiniteNumber());
+  c->add_option("--catch-extra-mm", a.loop.catch_extra_mm,
+                "How far past the press depth the arm moves back in, 0-4 mm (default 0: to the press depth).")
+      ->check(FiniteNumber());
   c->add_option("--hold-s", a.loop.hold_s, "How long the trial watches the object once the arm is back (default 0.5).")
       ->check(FiniteNumber());
   c->add_option("--speed-mm-s", a.speeds, "Retraction speeds, comma-separated, 0.1-20 mm/s (default 1).")
