@@ -130,6 +130,24 @@ TEST_F(ViewCliTest, ScreenshotShowsTheObjectAndIsWrittenAsPng) {
   EXPECT_EQ(testing::TempFilesIn(dir_), 0);
 }
 
+TEST_F(ViewCliTest, ScreenshotShowsAStoredRunReplayedExactly) {
+  testing::TestDisplay display;
+  if (!display.unavailable().empty()) GTEST_SKIP() << display.unavailable();
+  const auto g = Run("generate rail --runs 2 --seed 4 --jobs 1 --quiet --set rail.lift_mm=5 "
+                     "--set rail.retract_speed_mm_s=5 --out " + P("d.h5"));
+  ASSERT_EQ(g.code, 0) << g.err;
+  // Run 1 in its hold (3.1 s to 3.6 s).
+  const auto r = Run("view --replay " + P("d.h5") + " --run 1 --screenshot " + P("replay.png") +
+                     " --width 320 --height 240 --time 3.4");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("replay of run 1 of " + P("d.h5") + " up to t = 3.4"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": largest pos_px difference from the stored run: 0 px over 341 frames\n"), std::string::npos)
+      << r.err;
+  const RgbImage img = ReadPng(P("replay.png"));
+  EXPECT_GT(OrangePixels(img), kSubstantialPixels);
+  EXPECT_GT(GreenPixels(img), kSomePinsPixels);
+}
+
 TEST_F(ViewCliTest, ScreenshotShowsNothingAfterTheRunHasEnded) {
   testing::TestDisplay display;
   if (!display.unavailable().empty()) GTEST_SKIP() << display.unavailable();

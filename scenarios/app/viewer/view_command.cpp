@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "scenarios/app/viewer/rail_view_source.h"
+#include "scenarios/app/viewer/replay_view_source.h"
 #include "scenarios/cli/common.h"
 #include "scenarios/cli/option_checks.h"
 #include "sim/config.h"
@@ -30,6 +31,7 @@ struct ViewArgs {
   ConfigArgs config;             // scenario, --config, --set and the shortcuts, as for generate
   int run = 0;                   // --run
   unsigned long long seed = 1;   // --seed
+  std::string replay;            // --replay FILE.h5 ("" = simulate the scenario)
   std::string screenshot;        // "" = live window
   double time_s = 0.0;
   int width = 1024, height = 768;
@@ -41,14 +43,19 @@ void CheckScreenshotName(const ViewArgs& a) {
   if (std::filesystem::path(a.screenshot).extension() != ".png") {
     throw InputError(fmt::format("--screenshot {}: must name a .png file", a.screenshot));
   }
-  if (!a.config.config_path.empty() && SameFile(a.screenshot, a.config.config_path)) {
-    throw InputError(fmt::format("--screenshot {}: is the --config file; choose another name", a.screenshot));
+  for (const auto& [option, input] : {std::pair{"--config", a.config.config_path}, std::pair{"--replay", a.replay}}) {
+    if (!input.empty() && SameFile(a.screenshot, input)) {
+      throw InputError(fmt::format("--screenshot {}: is the {} file; choose another name", a.screenshot, option));
+    }
   }
   CheckWritableLocation(a.screenshot);
 }
 
 // Everything that can be checked before the scene is built.
 void CheckViewArgs(const ViewArgs& a) {
+  if (a.replay.empty() && a.config.scenario.empty()) {
+    throw InputError("view: give a scenario (see 'tactip scenarios') or --replay FILE.h5");
+  }
   CheckImageSide("--width", a.width);
   CheckImageSide("--height", a.height);
   if (!(a.time_s >= 0.0 && a.time_s <= kMaxViewTimeS)) {
@@ -98,9 +105,37 @@ int ViewScenario(const ViewArgs& a) {
   return Show(source, a, "tactip view " + entry.name);
 }
 
+// `view --replay FILE`: run --run of the file re-simulated, with the stored labels; reports
+// how far the re-simulated pins are from the stored ones.
+int ViewReplay(const ViewArgs& a) {
+  ReplayViewSource source(a.replay, a.run);
+  if (a.time_s > source.stored_end_s()) {
+    throw InputError(fmt::format("--time = {}: run {} of {} ends at t = {:.3f} s; choose a time in [0, {:.3f}] s",
+                                 a.time_s, a.run, a.replay, source.stored_end_s(), source.stored_end_s()));
+  }
+  const int code = Show(source, a, "tactip view --replay " + a.replay);
+  std::fprintf(stderr, "replay of run %d of %s up to t = %.3f s: %s\n", a.run, a.replay.c_str(), source.time(),
+               source.DifferenceReport().c_str());
+  return code;
+}
+
 int RunView(const ViewArgs& a) {
   CheckViewArgs(a);
-  return ViewScenario(a);
+  return a.replay.empty() ? ViewScenario(a) : ViewReplay(a);
+}
+
+// --replay and the options that choose what to simulate exclude each other.
+void AddReplayOption(CLI::App* view, std::string& replay) {
+  CLI::Option* opt = view->add_option(
+      "--replay", replay,
+      "Re-simulate run --run of this dataset (written by 'tactip generate') from its stored scenario, config and "
+      "seed, with the pins coloured by its stored labels, and report the largest difference between its stored "
+      "and the re-simulated pin positions (pos_px; 0 px when the replay is exact).");
+  opt->type_name("FILE.h5")->check(NonEmpty("an HDF5 dataset"));
+  for (const char* name : {"scenario", "--config", "--set", "--speed-mm-s", "--stimulus", "--skin", "--auto-timestep",
+                           "--seed"}) {
+    opt->excludes(view->get_option(name));
+  }
 }
 
 }  // namespace
@@ -109,15 +144,18 @@ std::function<int()> AddViewCommand(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
   auto* view = app.add_subcommand(
       "view",
-      "Show a run of a scenario as it is simulated in a window (mouse: orbit, "
+      "Show a run of a scenario as it is simulated, or a stored run replayed (--replay), in a window (mouse: orbit, "
       "zoom; keys: space pause, right arrow or '.' step, '-'/'+' slower/faster, 'f' contact forces, Esc quit), "
       "or save one frame with --screenshot. Pins: stick green, slip red, no contact grey.");
-  a->config.Add(view);
+  view->add_option("scenario", a->config.scenario, "Scenario name (see 'tactip scenarios'); not with --replay.")
+      ->check(NonEmpty("a scenario name (see 'tactip scenarios')"));
+  a->config.Add(view, false);
   a->config.AddAutoTimestep(view);
   view->add_option("--run", a->run, fmt::format("Run number, 0 to {} (default 0): the run of 'tactip generate' with "
-                                                "that index.", kMaxRunIndex))
+                                                "that index, or the run of the --replay file.", kMaxRunIndex))
       ->check(CLI::Range(0, kMaxRunIndex));
   AddSeedOption(view, a->seed, "Master seed, as for 'tactip generate' (default 1).");
+  AddReplayOption(view, a->replay);
   view->add_option("--screenshot", a->screenshot,
                    "Render one frame into this PNG file and exit (no window; headless: xvfb-run -a tactip view ...).")
       ->check([](const std::string& path) { return path.empty() ? std::string("must name a .png file") : std::string(); });
