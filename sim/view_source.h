@@ -2,6 +2,7 @@
 // What the viewer shows: a simulation that advances one physics step at a time, with the
 // colour of each pin now. No windowing here.
 
+#include <string>
 #include <vector>
 
 #include "sim/render_types.h"
@@ -23,6 +24,9 @@ struct ViewSource {
   virtual CameraView Camera() const { return {}; }
   /// Length of the contact force arrows per newton (0: the model's visual setting).
   virtual double force_scale_m_N() const { return 0.0; }
+  /// One line about what is shown now, under the playback status and in the window title
+  /// (empty: none).
+  virtual std::string Status() const { return {}; }
   virtual ~ViewSource() = default;
 };
 

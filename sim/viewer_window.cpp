@@ -15,6 +15,7 @@ struct ViewerWindow::State {
   std::unique_ptr<GlWindow> window;  // destroyed after draw
   std::unique_ptr<SceneDraw> draw;
   ViewerControls controls;
+  std::string title;  // the window's title without the source's status
   bool left_down = false, right_down = false;  // mouse buttons held
   double mouse_x = 0.0, mouse_y = 0.0;         // last cursor position (screen pixels)
 };
@@ -68,6 +69,7 @@ void OnScroll(GLFWwindow* w, double /*dx*/, double dy) { StateOf(w).draw->Zoom(-
 
 ViewerWindow::ViewerWindow(const CompiledModel& model, int width, int height, const std::string& title)
     : state_(std::make_unique<State>()) {
+  state_->title = title;
   CheckImageSide("window width", width);
   CheckImageSide("window height", height);
   state_->window = std::make_unique<GlWindow>(width, height, true, title);
@@ -94,6 +96,7 @@ void ViewerWindow::Run(ViewSource& source, bool show_forces) {
   if (show_forces != s.controls.show_forces()) s.controls.Apply(ViewerCommand::kToggleForces);
   s.draw->SetView(source.Camera());
   auto last = Clock::now();
+  std::string shown_status;  // the source's status line in the title now
   while (!glfwWindowShouldClose(w) && !s.controls.quit()) {
     // Advance by the wall time since the last frame, then draw the state and the status.
     const auto now = Clock::now();
@@ -106,7 +109,12 @@ void ViewerWindow::Run(ViewSource& source, bool show_forces) {
     mjrRect viewport{0, 0, 0, 0};
     glfwGetFramebufferSize(w, &viewport.width, &viewport.height);
     s.draw->Draw(source.sim(), options, viewport);
-    s.draw->Overlay(viewport, s.controls.Status(source.time()));
+    const std::string status = source.Status();
+    if (status != shown_status) {
+      glfwSetWindowTitle(w, (status.empty() ? s.title : s.title + " - " + status).c_str());
+      shown_status = status;
+    }
+    s.draw->Overlay(viewport, s.controls.Status(source.time()) + (status.empty() ? "" : "\n" + status));
     glfwSwapBuffers(w);
     glfwPollEvents();
   }

@@ -21,7 +21,8 @@ class ViewerWindow {
 
   /// Shows `source` (a simulation of the window's model), stepping it in real time or
   /// slower, until Esc is pressed or the window is closed; contact forces are drawn from
-  /// the start when `show_forces` is true ('f' toggles them).
+  /// the start when `show_forces` is true ('f' toggles them). The source's status line is
+  /// shown under the playback status and after the title.
   void Run(ViewSource& source, bool show_forces = false);
 
   /// Per-window input and drawing state (defined with the GLFW callbacks).

@@ -1,11 +1,18 @@
 #include "scenarios/app/viewer/rail_view_source.h"
 
-#include "models/rail_rig.h"
-#include "models/skin.h"
+#include <fmt/format.h>
+
+#include "scenarios/app/viewer/pin_label_colours.h"
 
 namespace tactip {
 
 namespace {
+
+// The config, checked as a scenario checks it before building its scene.
+RailScenarioConfig Validated(RailScenarioConfig cfg) {
+  ValidateConfig(cfg);
+  return cfg;
+}
 
 // The rail scene with the parts that are only there to be seen.
 SceneOptions WithVisualParts() {
@@ -14,48 +21,60 @@ SceneOptions WithVisualParts() {
   return options;
 }
 
-}  // namespace
-
-RailViewSource::RailViewSource(const RailScenarioConfig& cfg)
-    : scenario_(cfg, WithVisualParts()), sim_(scenario_.model()) {
-  const CompiledModel& m = scenario_.model();
-  object_geom_ = m.GeomId(RailNames::kStimulus);
-  sensor_body_ = m.BodyId(RailNames::kSensor);
-  slider_body_ = m.BodyId(RailNames::kSlider);
-  // Pins that cannot reach the object have no contact geom.
-  for (int i = 0; i < scenario_.n_pins(); ++i) {
-    try {
-      pin_geoms_.push_back(m.GeomId(SkinNames::PinGeom(i)));
-    } catch (const ModelError&) {
-      // culled: this pin has no contact geom
-    }
-  }
-  sim_.Forward();
+// The protocol's phase at time t.
+const char* PhaseAt(const RailSchedule& s, double t) {
+  if (t < s.press_start) return "settle";
+  if (t < s.press_end) return "press";
+  if (t < s.lift_start) return "settle";
+  if (t < s.lift_end) return "lift";
+  if (t < s.retract_start) return "hold";
+  return "retract";
 }
 
+}  // namespace
+
+RailViewSource::RailViewSource(const RailScenarioConfig& cfg, int index, std::uint64_t seed)
+    : cfg_(Validated(cfg)), ids_(cfg_, WithVisualParts()), index_(index), seed_(seed), run_(cfg_, ids_, index, seed) {}
+
 bool RailViewSource::Step() {
-  sim_.Step();
+  if (finished_) return false;
+  if (run_.Step(rec_)) return true;
+  run_.Finish(rec_);
+  finished_ = true;
+  return false;
+}
+
+bool RailViewSource::AdvanceTo(double time_s) {
+  while (time() < time_s) {
+    if (!Step()) return false;
+  }
   return true;
 }
 
-void RailViewSource::AdvanceTo(double time_s) {
-  while (sim_.time() < time_s) Step();
+std::vector<GeomColour> RailViewSource::Colours() const {
+  const TactileSensor& s = run_.sensor();
+  return PinLabelColours(s.ids().pin_geom, s.pin_contact().data(), s.pin_slip().data());
 }
 
-std::vector<GeomColour> RailViewSource::Colours() const {
-  std::vector<GeomColour> colours;
-  colours.reserve(pin_geoms_.size());
-  for (int g : pin_geoms_) colours.push_back({g, PinColours::kNoContact});
-  return colours;
+std::vector<int> RailViewSource::pin_geoms() const {
+  std::vector<int> geoms;
+  for (int g : ids_.sensor.pin_geom) {
+    if (g >= 0) geoms.push_back(g);
+  }
+  return geoms;
 }
 
 CameraView RailViewSource::Camera() const {
   CameraView view;
-  view.look_at_bodies = {sensor_body_, slider_body_};
+  view.look_at_bodies = {ids_.sensor.body, ids_.slider_body};
   view.distance_m = kCameraDistanceM;
   view.azimuth_deg = 80.0;
   view.elevation_deg = -20.0;
   return view;
+}
+
+std::string RailViewSource::Status() const {
+  return fmt::format("run {} (seed {}): {}", index_, seed_, finished_ ? "ended" : PhaseAt(run_.schedule(), time()));
 }
 
 }  // namespace tactip

@@ -1,39 +1,63 @@
 #pragma once
-// The rail scene for the viewer: its initial state, stepped with zero controls (a stand-in
-// until the steppable rail run drives the viewer).
+// The rail scene for the viewer: one run of the rail protocol (press, lift, hold, retract
+// until the object falls), stepped as the viewer asks, with its pins coloured by the run's
+// contact labels.
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
-#include "scenarios/rail/rail_scenario.h"
+#include "scenarios/rail/rail_run.h"
 #include "sim/view_source.h"
 
 namespace tactip {
 
-/// The rail scene of one config with its visual parts (rail beam, sensor housing), its pins
-/// coloured as not in contact, seen from the side with the sensor and the object in view.
+/// Run `index` of a rail config with master seed `seed`, on the scene with its visual parts
+/// (rail beam, sensor housing, light), seen from the side with the sensor and the object in
+/// view. It simulates and records exactly what `generate` does for that run: the visual
+/// parts do not collide and carry no mass, so they change no physics.
 class RailViewSource : public ViewSource {
  public:
-  /// Builds and compiles the scene (throws InputError/ModelError) and computes its initial
-  /// state (contacts included).
-  explicit RailViewSource(const RailScenarioConfig& cfg);
+  /// Validates `cfg`, builds and compiles the scene (throws InputError/ModelError) and sets
+  /// the run up at its initial state.
+  RailViewSource(const RailScenarioConfig& cfg, int index, std::uint64_t seed);
+  RailViewSource(const RailViewSource&) = delete;
+  RailViewSource& operator=(const RailViewSource&) = delete;
 
-  /// One physics step with zero controls; throws SimulationError.
+  /// One step of the run; false once the protocol has ended (the record is then complete).
+  /// Throws SimulationError.
   bool Step() override;
-  const Simulation& sim() const override { return sim_; }
-  /// Every pin's contact geom grey (no contact).
+  const Simulation& sim() const override { return run_.simulation(); }
+  /// The pins by the labels of the sensor's last contact read-out: stick green, slip red,
+  /// no contact grey. The run reads the contacts at every camera frame, and at every step
+  /// from the lift on until the gross-slip onset is found.
   std::vector<GeomColour> Colours() const override;
-  double time() const override { return sim_.time(); }
+  double time() const override { return run_.time(); }
   /// Looks at the middle of the sensor and the object, from the side.
   CameraView Camera() const override;
   double force_scale_m_N() const override { return kForceScaleM_N; }
+  /// "run K (seed S): PHASE", the protocol's phase now (press, lift, hold, retract...).
+  std::string Status() const override;
 
-  /// Steps until the simulated time reaches `time_s`.
-  void AdvanceTo(double time_s);
+  /// Steps until the simulated time reaches `time_s`; false if the run ended before.
+  bool AdvanceTo(double time_s);
+  /// True once the run has ended.
+  bool finished() const { return finished_; }
+  /// The latest time the run can last (s): the protocol gives up then if the object has
+  /// not fallen.
+  double give_up_s() const { return run_.schedule().give_up; }
+
   /// The compiled scene shown.
-  const CompiledModel& model() const { return scenario_.model(); }
+  const CompiledModel& model() const { return *ids_.model; }
+  /// What the run has recorded so far (every camera frame up to now), as `generate` does.
+  const RunRecord& record() const { return rec_; }
+  /// The sensor (its pins' labels and geoms).
+  const TactileSensor& sensor() const { return run_.sensor(); }
   /// The object's geom, and the contact geom of every pin that has one.
-  int object_geom() const { return object_geom_; }
-  const std::vector<int>& pin_geoms() const { return pin_geoms_; }
+  int object_geom() const { return ids_.stimulus_geom; }
+  std::vector<int> pin_geoms() const;
+  int index() const { return index_; }
+  std::uint64_t seed() const { return seed_; }
 
   /// Contact force arrows: 20 mm for 1 N (pins carry tenths of a newton).
   static constexpr double kForceScaleM_N = 0.02;
@@ -41,10 +65,13 @@ class RailViewSource : public ViewSource {
   static constexpr double kCameraDistanceM = 0.12;
 
  private:
-  RailScenario scenario_;
-  Simulation sim_;
-  std::vector<int> pin_geoms_;
-  int object_geom_ = -1, sensor_body_ = -1, slider_body_ = -1;
+  const RailScenarioConfig cfg_;  // the run and the ids refer to these two
+  const RailSceneIds ids_;
+  const int index_;
+  const std::uint64_t seed_;
+  RailRun run_;
+  RunRecord rec_;
+  bool finished_ = false;
 };
 
 }  // namespace tactip

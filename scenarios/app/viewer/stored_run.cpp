@@ -1,0 +1,51 @@
+#include "scenarios/app/viewer/stored_run.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "scenarios/registry.h"
+
+namespace tactip {
+
+namespace {
+
+// "run 0", "runs 0-3" for a contiguous block, else "4 runs from 0 to 9".
+std::string RunsText(const std::vector<int>& runs) {
+  if (runs.size() == 1) return fmt::format("run {}", runs.front());
+  if (runs.back() - runs.front() + 1 == static_cast<int>(runs.size())) {
+    return fmt::format("runs {}-{}", runs.front(), runs.back());
+  }
+  return fmt::format("{} runs from {} to {}", runs.size(), runs.front(), runs.back());
+}
+
+// The stored config text applied to the defaults (it holds every key), and checked.
+RailScenarioConfig StoredConfig(const std::string& path, const DatasetHeader& header) {
+  try {
+    FindScenario(header.scenario);
+    RailScenarioConfig cfg;
+    ApplyFlat(cfg, FlattenYaml(header.config_yaml, "its root attribute config_yaml"));
+    ValidateConfig(cfg);
+    return cfg;
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("--replay {}: {}", path, e.what()));
+  }
+}
+
+}  // namespace
+
+StoredRun ReadStoredRun(const std::string& path, int index) {
+  const DatasetReader reader(path);
+  const std::vector<int>& runs = reader.run_indices();
+  if (!std::binary_search(runs.begin(), runs.end(), index)) {
+    throw InputError(fmt::format("--run {}: {} has no run {} (it has {})", index, path, index, RunsText(runs)));
+  }
+  StoredRun stored;
+  stored.path = path;
+  stored.header = reader.header();
+  stored.config = StoredConfig(path, stored.header);
+  stored.record = reader.ReadRun(index);
+  return stored;
+}
+
+}  // namespace tactip
