@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -34,33 +35,130 @@ long long FirstNonFinite(const std::vector<T>& v) {
   return -1;
 }
 
+/// An array that must hold finite values: its path in the run, the index of its first
+/// non-finite value (-1: none), values per frame and per pin (0: no pin axis).
+struct FiniteCheck {
+  std::string path;
+  long long bad;
+  size_t per_frame, per_pin;
+};
+
+/// The arrays of `run` that must be finite, with their paths in the file.
+std::vector<FiniteCheck> FiniteChecks(const RunRecord& run) {
+  std::vector<FiniteCheck> out = {{"time", FirstNonFinite(run.time), 1, 0}};
+  for (const SensorRecord& s : run.sensors) {
+    const std::string at = SensorPath(kDatasetLayoutVersion, s.name);
+    const size_t n = static_cast<size_t>(s.n_pins);
+    out.push_back({at + "pins/pos_px", FirstNonFinite(s.pos_px), 2 * n, 2});
+    out.push_back({at + "pins/pos_m", FirstNonFinite(s.pos_m), 3 * n, 3});
+    out.push_back({at + "external/pos_px", FirstNonFinite(s.external_px), 2 * n, 2});
+    out.push_back({at + "external/pos_m", FirstNonFinite(s.external_m), 3 * n, 3});
+    out.push_back({at + "contact/normal_N", FirstNonFinite(s.normal_N), n, 1});
+    out.push_back({at + "contact/tangential_N", FirstNonFinite(s.tangential_N), 2 * n, 2});
+  }
+  out.push_back({"object/height_m", FirstNonFinite(run.object_height_m), 1, 0});
+  out.push_back({"actions/controls", FirstNonFinite(run.actions.controls), run.actions.actuators.size(), 0});
+  std::vector<double> action_times;
+  for (const ControllerAction& a : run.actions.list) action_times.push_back(a.time_s);
+  out.push_back({"actions/time", FirstNonFinite(action_times), 1, 0});
+  return out;
+}
+
 /// Throws InputError (prefix `err`) naming the first array of `run` that holds a non-finite
 /// value, with its frame and pin: such a value is no data, and a file must not carry it.
 void CheckFinite(const RunRecord& run, const std::string& err) {
-  struct Array {
-    const char* path;
-    long long bad;
-    size_t per_frame, per_pin;  // values per frame and per pin (0: no pin axis)
-  };
-  const size_t n = static_cast<size_t>(run.n_pins);
-  const Array arrays[] = {
-      {"time", FirstNonFinite(run.time), 1, 0},
-      {"pins/pos_px", FirstNonFinite(run.pos_px), 2 * n, 2},
-      {"pins/pos_m", FirstNonFinite(run.pos_m), 3 * n, 3},
-      {"external/pos_px", FirstNonFinite(run.external_px), 2 * n, 2},
-      {"external/pos_m", FirstNonFinite(run.external_m), 3 * n, 3},
-      {"contact/normal_N", FirstNonFinite(run.normal_N), n, 1},
-      {"contact/tangential_N", FirstNonFinite(run.tangential_N), 2 * n, 2},
-      {"object/height_m", FirstNonFinite(run.object_height_m), 1, 0},
-  };
-  for (const Array& a : arrays) {
+  for (const FiniteCheck& a : FiniteChecks(run)) {
     if (a.bad < 0) continue;
     const size_t k = static_cast<size_t>(a.bad);
-    std::string where = "frame " + std::to_string(k / a.per_frame);
+    std::string where = (a.path == "actions/time" ? "action " : "frame ") + std::to_string(k / a.per_frame);
     if (a.per_pin > 0) where += ", pin " + std::to_string((k % a.per_frame) / a.per_pin);
     throw InputError(err + "/runs/" + RunGroupName(run.index) + "/" + a.path + " would hold a non-finite value (" +
                      where + "); the run is not written");
   }
+}
+
+/// Writes numeric attributes `attrs` (those `pick` selects) then text attributes `text` on
+/// `obj` (path `where`), each in name order.
+void WriteAttrs(hid_t obj, const std::map<std::string, double>& attrs, bool (*pick)(const std::string&),
+                const std::map<std::string, std::string>& text, const std::string& where, WriteErrors& err) {
+  for (const auto& [key, value] : attrs) {
+    if (pick(key)) WriteScalarAttr(obj, key, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value, where, err);
+  }
+  for (const auto& [key, value] : text) WriteStringAttr(obj, key, value, where, err);
+}
+
+/// Writes sensor `s` of a T-frame run as group `s.name` under `sensors` (path `where`).
+void WriteSensor(hid_t sensors, const SensorRecord& s, hsize_t t, const std::string& where, WriteErrors& err) {
+  const std::string at = where + "/" + s.name;
+  const Hid group = CreateGroup(sensors, s.name.c_str(), at, err);
+  const hid_t g = group.get();
+  const std::int64_t n_pins = s.n_pins;
+  WriteScalarAttr(g, "n_pins", H5T_STD_I64LE, H5T_NATIVE_INT64, &n_pins, at, err);
+  WriteAttrs(g, s.attrs, [](const std::string&) { return true; }, s.text_attrs, at, err);
+  const hsize_t n = static_cast<hsize_t>(s.n_pins);
+  {
+    const Hid pins = CreateGroup(g, "pins", at + "/pins", err);
+    WriteArray(pins.get(), "pos_px", {t, n, 2}, s.pos_px, "px", at + "/pins", err);
+    WriteArray(pins.get(), "valid", {t, n}, s.valid, "1", at + "/pins", err);
+    WriteArray(pins.get(), "pos_m", {t, n, 3}, s.pos_m, "m", at + "/pins", err);
+  }
+  {
+    const Hid labels = CreateGroup(g, "labels", at + "/labels", err);
+    WriteArray(labels.get(), "gross_slip", {t}, s.gross_slip, "1", at + "/labels", err);
+    WriteArray(labels.get(), "pin_slip", {t, n}, s.pin_slip, "1", at + "/labels", err);
+    WriteArray(labels.get(), "pin_contact", {t, n}, s.pin_contact, "1", at + "/labels", err);
+    WriteArray(labels.get(), "incipient", {t}, s.incipient, "1", at + "/labels", err);
+  }
+  if (!s.external_px.empty()) {
+    const Hid ext = CreateGroup(g, "external", at + "/external", err);
+    WriteArray(ext.get(), "pos_px", {t, n, 2}, s.external_px, "px", at + "/external", err);
+    WriteArray(ext.get(), "pos_m", {t, n, 3}, s.external_m, "m", at + "/external", err);
+  }
+  const Hid contact = CreateGroup(g, "contact", at + "/contact", err);
+  WriteArray(contact.get(), "normal_N", {t, n}, s.normal_N, "N", at + "/contact", err);
+  WriteArray(contact.get(), "tangential_N", {t, n, 2}, s.tangential_N, "N", at + "/contact", err);
+}
+
+/// Writes group actions/ of a T-frame run under `run` (path `where`): the controls with
+/// their actuators' names, and what the controller did when.
+void WriteActions(hid_t run, const ActionRecord& actions, hsize_t t, const std::string& where, WriteErrors& err) {
+  const std::string at = where + "/actions";
+  const Hid group = CreateGroup(run, "actions", at, err);
+  if (!actions.actuators.empty()) {
+    WriteArray(group.get(), "controls", {t, actions.actuators.size()}, actions.controls, "ctrl", at, err);
+    const Hid controls = Must(H5Dopen2(group.get(), "controls", H5P_DEFAULT), H5Dclose, err, "cannot open " + at);
+    WriteStringListAttr(controls.get(), "actuators", actions.actuators, at + "/controls", err);
+  }
+  std::vector<double> time;
+  std::vector<std::string> what;
+  for (const ControllerAction& a : actions.list) {
+    time.push_back(a.time_s);
+    what.push_back(a.what);
+  }
+  WriteArray(group.get(), "time", {time.size()}, time, "s", at, err);
+  WriteStringArray(group.get(), "what", what, at, err);
+}
+
+/// Writes the groups and attributes of `run` into its (new, empty) group `g` (path `where`).
+void WriteRunContents(hid_t g, const RunRecord& run, const std::string& where, WriteErrors& err) {
+  // Run attributes other than the events, in name order, numeric then text.
+  WriteAttrs(g, run.attrs, [](const std::string& k) { return !IsEventAttribute(k); }, run.text_attrs, where, err);
+  const hsize_t t = run.frames();
+  WriteArray(g, "time", {t}, run.time, "s", where, err);
+  {
+    // Sensors in the record's (scene) order.
+    const Hid sensors = CreateGroup(g, "sensors", where + "/sensors", err, /*ordered=*/true);
+    for (const SensorRecord& s : run.sensors) WriteSensor(sensors.get(), s, t, where + "/sensors", err);
+  }
+  {
+    const Hid object = CreateGroup(g, "object", where + "/object", err);
+    WriteArray(object.get(), "height_m", {t}, run.object_height_m, "m", where + "/object", err);
+  }
+  {
+    const Hid events = CreateGroup(g, "events", where + "/events", err);
+    WriteAttrs(events.get(), run.attrs, IsEventAttribute, {}, where + "/events", err);
+  }
+  if (!run.actions.empty()) WriteActions(g, run.actions, t, where, err);
 }
 
 }  // namespace
@@ -134,6 +232,8 @@ DatasetWriter::DatasetWriter(const std::string& path, const DatasetHeader& heade
   // Root attributes, then the (possibly empty) /runs group.
   const hid_t root = im.file.get();
   WriteStringAttr(root, "tactip_version", header.tactip_version, "/", im.err);
+  const std::uint64_t layout = kDatasetLayoutVersion;
+  WriteScalarAttr(root, "layout_version", H5T_STD_U64LE, H5T_NATIVE_UINT64, &layout, "/", im.err);
   WriteStringAttr(root, "scenario", header.scenario, "/", im.err);
   WriteScalarAttr(root, "seed", H5T_STD_U64LE, H5T_NATIVE_UINT64, &header.seed, "/", im.err);
   WriteStringAttr(root, "config_yaml", header.config_yaml, "/", im.err);
@@ -155,12 +255,6 @@ void DatasetWriter::WriteRun(const RunRecord& run) {
   if (impl_->err.failed) throw std::logic_error("DatasetWriter::WriteRun called after a failed write to '" + path_ + "'");
   run.CheckShapes();
   CheckFinite(run, impl_->err.prefix);
-  for (const auto& [key, value] : run.text_attrs) {
-    if (run.attrs.count(key) != 0) {
-      throw std::logic_error("RunRecord " + RunGroupName(run.index) + ": attribute '" + key +
-                             "' is both numeric and text");
-    }
-  }
   const QuietHdf5 quiet;
   Impl& im = *impl_;
   const std::string name = RunGroupName(run.index);
@@ -171,43 +265,7 @@ void DatasetWriter::WriteRun(const RunRecord& run) {
 
   try {
     const Hid group = CreateGroup(im.runs.get(), name.c_str(), where, im.err);
-    const hid_t g = group.get();
-    // Attributes in name order (std::map), numeric then text.
-    for (const auto& [key, value] : run.attrs) {
-      WriteScalarAttr(g, key, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value, where, im.err);
-    }
-    for (const auto& [key, value] : run.text_attrs) WriteStringAttr(g, key, value, where, im.err);
-
-    const hsize_t t = run.frames();
-    const hsize_t n = static_cast<hsize_t>(run.n_pins);
-    WriteArray(g, "time", {t}, run.time, "s", where, im.err);
-    {
-      const Hid pins = CreateGroup(g, "pins", where + "/pins", im.err);
-      WriteArray(pins.get(), "pos_px", {t, n, 2}, run.pos_px, "px", where + "/pins", im.err);
-      WriteArray(pins.get(), "valid", {t, n}, run.valid, "1", where + "/pins", im.err);
-      WriteArray(pins.get(), "pos_m", {t, n, 3}, run.pos_m, "m", where + "/pins", im.err);
-    }
-    {
-      const Hid labels = CreateGroup(g, "labels", where + "/labels", im.err);
-      WriteArray(labels.get(), "gross_slip", {t}, run.gross_slip, "1", where + "/labels", im.err);
-      WriteArray(labels.get(), "pin_slip", {t, n}, run.pin_slip, "1", where + "/labels", im.err);
-      WriteArray(labels.get(), "pin_contact", {t, n}, run.pin_contact, "1", where + "/labels", im.err);
-      WriteArray(labels.get(), "incipient", {t}, run.incipient, "1", where + "/labels", im.err);
-    }
-    if (!run.external_px.empty()) {
-      const Hid ext = CreateGroup(g, "external", where + "/external", im.err);
-      WriteArray(ext.get(), "pos_px", {t, n, 2}, run.external_px, "px", where + "/external", im.err);
-      WriteArray(ext.get(), "pos_m", {t, n, 3}, run.external_m, "m", where + "/external", im.err);
-    }
-    {
-      const Hid contact = CreateGroup(g, "contact", where + "/contact", im.err);
-      WriteArray(contact.get(), "normal_N", {t, n}, run.normal_N, "N", where + "/contact", im.err);
-      WriteArray(contact.get(), "tangential_N", {t, n, 2}, run.tangential_N, "N", where + "/contact", im.err);
-    }
-    {
-      const Hid object = CreateGroup(g, "object", where + "/object", im.err);
-      WriteArray(object.get(), "height_m", {t}, run.object_height_m, "m", where + "/object", im.err);
-    }
+    WriteRunContents(group.get(), run, where, im.err);
   } catch (...) {
     // Unlink the partial run so a later Commit never publishes it.
     H5Ldelete(im.runs.get(), name.c_str(), H5P_DEFAULT);

@@ -82,8 +82,12 @@ Hid UntimedGroupProps(WriteErrors& err) {
   return gcpl;
 }
 
-Hid CreateGroup(hid_t parent, const char* name, const std::string& where, WriteErrors& err) {
+Hid CreateGroup(hid_t parent, const char* name, const std::string& where, WriteErrors& err, bool ordered) {
   const Hid gcpl = UntimedGroupProps(err);
+  if (ordered) {
+    MustOk(H5Pset_link_creation_order(gcpl.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), err,
+           "cannot create group " + where);
+  }
   return Must(H5Gcreate2(parent, name, H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose, err,
               "cannot create group " + where);
 }
@@ -170,6 +174,115 @@ std::string ShapeText(const std::vector<hsize_t>& shape) {
   std::string out = "(";
   for (size_t i = 0; i < shape.size(); ++i) out += (i ? ", " : "") + std::to_string(shape[i]);
   return out + ")";
+}
+
+namespace {
+
+/// The variable-length strings `values` as the C pointers HDF5 writes.
+std::vector<const char*> CStrings(const std::vector<std::string>& values) {
+  std::vector<const char*> out;
+  out.reserve(values.size());
+  for (const std::string& v : values) out.push_back(v.c_str());
+  return out;
+}
+
+/// Frees the strings HDF5 allocated while reading variable-length strings.
+class VlenStrings {
+ public:
+  VlenStrings(size_t count, hid_t mem_type, hid_t space) : text_(count, nullptr), type_(mem_type), space_(space) {}
+  ~VlenStrings() {
+#if H5_VERSION_GE(1, 12, 0)
+    H5Treclaim(type_, space_, H5P_DEFAULT, text_.data());
+#else
+    H5Dvlen_reclaim(type_, space_, H5P_DEFAULT, text_.data());
+#endif
+  }
+  VlenStrings(const VlenStrings&) = delete;
+  VlenStrings& operator=(const VlenStrings&) = delete;
+  char** data() { return text_.data(); }
+  std::vector<std::string> Strings() const {
+    std::vector<std::string> out;
+    for (const char* t : text_) out.emplace_back(t != nullptr ? t : "");
+    return out;
+  }
+
+ private:
+  std::vector<char*> text_;
+  hid_t type_, space_;
+};
+
+}  // namespace
+
+void WriteStringListAttr(hid_t obj, const std::string& name, const std::vector<std::string>& values,
+                         const std::string& where, WriteErrors& err) {
+  const std::string what = "cannot write attribute '" + name + "' of " + where;
+  const Hid type = Utf8StringType(err);
+  const hsize_t dims[1] = {values.size()};
+  const Hid space = Must(H5Screate_simple(1, dims, nullptr), H5Sclose, err, what);
+  const Hid attr = Must(H5Acreate2(obj, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                        err, what);
+  if (values.empty()) return;
+  const std::vector<const char*> text = CStrings(values);
+  MustOk(H5Awrite(attr.get(), type.get(), text.data()), err, what);
+}
+
+void WriteStringArray(hid_t parent, const char* name, const std::vector<std::string>& values,
+                      const std::string& where, WriteErrors& err) {
+  const std::string path = where + "/" + name;
+  const Hid type = Utf8StringType(err);
+  const hsize_t dims[1] = {values.size()};
+  const Hid space = Must(H5Screate_simple(1, dims, nullptr), H5Sclose, err, "cannot create " + path);
+  const Hid dcpl = Must(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, err, "cannot create " + path);
+  MustOk(H5Pset_obj_track_times(dcpl.get(), 0), err, "cannot create " + path);
+  const Hid dset = Must(H5Dcreate2(parent, name, type.get(), space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+                        H5Dclose, err, "cannot create " + path);
+  if (values.empty()) return;
+  const std::vector<const char*> text = CStrings(values);
+  MustOk(H5Dwrite(dset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()), err, "cannot write " + path);
+}
+
+std::vector<std::string> ReadStringList(hid_t obj, bool is_attr, const std::string& err, const std::string& where) {
+  const std::string what = "cannot read " + where;
+  const Hid file_type = Must(is_attr ? H5Aget_type(obj) : H5Dget_type(obj), H5Tclose, err, what);
+  const Hid space = Must(is_attr ? H5Aget_space(obj) : H5Dget_space(obj), H5Sclose, err, what);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (H5Tget_class(file_type.get()) != H5T_STRING || H5Tis_variable_str(file_type.get()) <= 0 || rank > 1) {
+    throw InputError(err + where + " is not a list of strings");
+  }
+  const hssize_t count = H5Sget_simple_extent_npoints(space.get());
+  if (count < 0) Fail(err, what);
+  if (count == 0) return {};
+  // Variable length: HDF5 allocates each text; VlenStrings releases them.
+  const Hid mem_type = Must(H5Tcopy(H5T_C_S1), H5Tclose, err, what);
+  MustOk(H5Tset_size(mem_type.get(), H5T_VARIABLE), err, what);
+  MustOk(H5Tset_cset(mem_type.get(), H5Tget_cset(file_type.get())), err, what);
+  VlenStrings text(static_cast<size_t>(count), mem_type.get(), space.get());
+  MustOk(is_attr ? H5Aread(obj, mem_type.get(), text.data())
+                 : H5Dread(obj, mem_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()),
+         err, what);
+  return text.Strings();
+}
+
+std::vector<std::string> MemberNames(hid_t group, const std::string& err, const std::string& what) {
+  // Creation order when the group tracks it (sensors are listed as written).
+  const Hid gcpl = Must(H5Gget_create_plist(group), H5Pclose, err, what);
+  unsigned order = 0;
+  MustOk(H5Pget_link_creation_order(gcpl.get(), &order), err, what);
+  const H5_index_t index = (order & H5P_CRT_ORDER_INDEXED) != 0 ? H5_INDEX_CRT_ORDER : H5_INDEX_NAME;
+  H5G_info_t info;
+  MustOk(H5Gget_info(group, &info), err, what);
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t len = H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    if (len < 0) Fail(err, what);
+    std::string name(static_cast<size_t>(len) + 1, '\0');
+    if (H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT) < 0) {
+      Fail(err, what);
+    }
+    name.resize(static_cast<size_t>(len));
+    names.push_back(std::move(name));
+  }
+  return names;
 }
 
 }  // namespace tactip::hdf5

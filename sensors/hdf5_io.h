@@ -137,8 +137,10 @@ Hid Utf8StringType(WriteErrors& err);
 /// Group creation properties without modification times (keeps files byte-identical).
 Hid UntimedGroupProps(WriteErrors& err);
 
-/// Creates group `name` under `parent`; `where` is its full path for messages.
-Hid CreateGroup(hid_t parent, const char* name, const std::string& where, WriteErrors& err);
+/// Creates group `name` under `parent`; `where` is its full path for messages. An
+/// `ordered` group remembers the order its members were created in (readers, h5py
+/// included, list them in that order).
+Hid CreateGroup(hid_t parent, const char* name, const std::string& where, WriteErrors& err, bool ordered = false);
 
 /// Writes a scalar string attribute `name` = `value` on object `obj` (path `where`).
 void WriteStringAttr(hid_t obj, const std::string& name, const std::string& value, const std::string& where,
@@ -171,11 +173,22 @@ void WriteArray(hid_t parent, const char* name, const std::vector<hsize_t>& shap
   MustOk(H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT), err, "cannot create " + path);
   const Hid dset = Must(H5Dcreate2(parent, name, H5Types<T>::file(), space.get(), H5P_DEFAULT, dcpl.get(), dapl.get()),
                         H5Dclose, err, "cannot create " + path);
-  MustOk(H5Dwrite(dset.get(), H5Types<T>::mem(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), err,
-         "cannot write " + path);
+  if (!data.empty()) {  // an array of no values has nothing to write
+    MustOk(H5Dwrite(dset.get(), H5Types<T>::mem(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), err,
+           "cannot write " + path);
+  }
   WriteStringAttr(dset.get(), "units", units, path, err);
 }
 
+
+/// Writes a 1-D attribute `name` of variable-length UTF-8 strings on `obj` (path `where`).
+void WriteStringListAttr(hid_t obj, const std::string& name, const std::vector<std::string>& values,
+                         const std::string& where, WriteErrors& err);
+
+/// Writes a 1-D contiguous array `name` of variable-length UTF-8 strings under `parent`
+/// (path `where`).
+void WriteStringArray(hid_t parent, const char* name, const std::vector<std::string>& values,
+                      const std::string& where, WriteErrors& err);
 
 /// Object kinds of an attribute as far as the reader cares.
 enum class AttrKind { kNumber, kString, kOther };
@@ -185,6 +198,15 @@ AttrKind KindOf(hid_t attr, const std::string& err, const std::string& what);
 
 /// Reads a one-element string attribute, variable- or fixed-length.
 std::string ReadStringAttr(hid_t attr, const std::string& err, const std::string& what);
+
+/// Reads a 1-D attribute or array `obj` of variable-length strings (`is_attr`: an
+/// attribute, else an array); throws InputError "<err>: <where> is not a list of strings"
+/// for any other type.
+std::vector<std::string> ReadStringList(hid_t obj, bool is_attr, const std::string& err, const std::string& where);
+
+/// Names of the members of group `group`: in creation order when the group tracks it,
+/// else in name order.
+std::vector<std::string> MemberNames(hid_t group, const std::string& err, const std::string& what);
 
 /// Names of all attributes of `obj`, in name order.
 std::vector<std::string> AttrNames(hid_t obj, const std::string& err, const std::string& what);

@@ -99,10 +99,10 @@ TEST_F(ShardCliTest, ShardRunsAreTheSameRunsOfTheWholeJob) {
   for (const int k : {2, 3}) {
     const RunRecord a = one.ReadRun(k), b = part.ReadRun(k);
     EXPECT_EQ(a.time, b.time) << k;
-    EXPECT_EQ(a.pos_px, b.pos_px) << k;
-    EXPECT_EQ(a.valid, b.valid) << k;
-    EXPECT_EQ(a.pin_slip, b.pin_slip) << k;
-    EXPECT_EQ(a.normal_N, b.normal_N) << k;
+    EXPECT_EQ(a.sensors[0].pos_px, b.sensors[0].pos_px) << k;
+    EXPECT_EQ(a.sensors[0].valid, b.sensors[0].valid) << k;
+    EXPECT_EQ(a.sensors[0].pin_slip, b.sensors[0].pin_slip) << k;
+    EXPECT_EQ(a.sensors[0].normal_N, b.sensors[0].normal_N) << k;
     EXPECT_EQ(a.object_height_m, b.object_height_m) << k;
     EXPECT_EQ(a.text_attrs, b.text_attrs) << k;
     EXPECT_EQ(a.attrs.size(), b.attrs.size()) << k;
@@ -152,17 +152,18 @@ TEST(GenerateShardTest, ShardOfAnotherRunCountIsRefused) {
 RunRecord TinyRun(int index) {
   RunRecord r;
   r.index = index;
-  r.n_pins = 2;
+  SensorRecord& s = r.sensors.emplace_back();
+  s.n_pins = 2;
   r.time = {0.0, 0.01};
-  r.pos_px.assign(8, 1.5f);
-  r.valid.assign(4, 1);
-  r.pos_m.assign(12, 0.01f);
-  r.gross_slip = {0, 1};
-  r.pin_slip.assign(4, 0);
-  r.pin_contact.assign(4, 1);
-  r.incipient = {0, 0};
-  r.normal_N.assign(4, 0.5f);
-  r.tangential_N.assign(8, 0.1f);
+  s.pos_px.assign(8, 1.5f);
+  s.valid.assign(4, 1);
+  s.pos_m.assign(12, 0.01f);
+  s.gross_slip = {0, 1};
+  s.pin_slip.assign(4, 0);
+  s.pin_contact.assign(4, 1);
+  s.incipient = {0, 0};
+  s.normal_N.assign(4, 0.5f);
+  s.tangential_N.assign(8, 0.1f);
   r.object_height_m = {0.05, 0.049};
   r.attrs["gross_slip_onset_s"] = 0.01;
   r.text_attrs["stimulus"] = "flat";
@@ -301,13 +302,13 @@ TEST_F(ShardCliTest, ShardBrokenMidwayLeavesNoOutputAndNoTemporaryFile) {
   {
     const hid_t file = H5Fopen(P("b.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     ASSERT_GE(file, 0);
-    ASSERT_GE(H5Ldelete(file, "/runs/run_0003/pins/pos_px", H5P_DEFAULT), 0);
+    ASSERT_GE(H5Ldelete(file, "/runs/run_0003/sensors/tactip/pins/pos_px", H5P_DEFAULT), 0);
     H5Fclose(file);
   }
   std::ofstream(P("out.h5")) << "previous contents";
   const CliResult r = Run("merge " + P("a.h5") + " " + P("b.h5") + " --out " + P("out.h5") + " --quiet");
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.err, "tactip: dataset '" + P("b.h5") + "': run_0003 has no array pins/pos_px\n");
+  EXPECT_EQ(r.err, "tactip: dataset '" + P("b.h5") + "': run_0003 has no array sensors/tactip/pins/pos_px\n");
   EXPECT_EQ(Slurp(P("out.h5")), "previous contents");
   EXPECT_EQ(Files(), (std::vector<std::string>{"a.h5", "b.h5", "out.h5"}));
 }
