@@ -61,7 +61,8 @@ ShardFile OpenShard(const std::string& path) {
   return f;
 }
 
-/// Throws unless `f` comes from the same job as `ref` (scenario, seed, config, version, runs).
+/// Throws unless `f` comes from the same job as `ref` (scenario, seed, config, version,
+/// layout, runs).
 void CheckSameJob(const ShardFile& ref, const ShardFile& f) {
   const DatasetHeader &a = ref.header, &b = f.header;
   std::string diff;
@@ -73,6 +74,8 @@ void CheckSameJob(const ShardFile& ref, const ShardFile& f) {
     diff = "a different config (root attribute 'config_yaml')";
   } else if (b.tactip_version != a.tactip_version) {
     diff = fmt::format("tactip version '{}', not '{}'", b.tactip_version, a.tactip_version);
+  } else if (b.layout_version != a.layout_version) {
+    diff = fmt::format("layout_version {}, not {}", b.layout_version, a.layout_version);
   } else if (b.shard->runs_total != a.shard->runs_total) {
     diff = fmt::format("runs_total {}, not {}", b.shard->runs_total, a.shard->runs_total);
   }

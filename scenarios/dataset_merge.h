@@ -25,9 +25,10 @@ struct MergeOptions {
 };
 
 /// Joins the shard files `inputs` (any order) into `out_path`, written atomically: runs
-/// in index order, root attributes without the shard ones, every array and attribute
-/// copied through DatasetWriter, so the file is byte for byte the one a single
-/// `tactip generate` of the whole job writes. Throws InputError naming the file and the
+/// in index order, root attributes without the shard ones, every sensor, array, action
+/// and attribute copied through DatasetWriter (in layout 2, whatever the shards' layout),
+/// so the file is byte for byte the one a single `tactip generate` of the whole job
+/// writes. Shards of one job share their layout. Throws InputError naming the file and the
 /// problem, before anything is written, when an input is missing, corrupt or not a shard
 /// file, shards come from different jobs, runs overlap or are missing, or `out_path` is
 /// an input; throws Interrupted when `*stop` becomes true. On any failure `out_path` is

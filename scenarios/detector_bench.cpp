@@ -76,7 +76,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
     r.speed_mm_s = std::nan("");
   }
   // Disjoint halves: first half trains, second half tests.
-  std::vector<LabeledRun> all = LoadDatasetRuns(r.dataset_path, {}, opts.score_onset_frame);
+  std::vector<LabeledRun> all = LoadDatasetRuns(r.dataset_path, {}, opts.score_onset_frame, opts.sensor);
   if (all.size() < 2) throw InputError(fmt::format("dataset '{}' has fewer than 2 runs", r.dataset_path));
   const size_t half = all.size() / 2;
   std::vector<LabeledRun> train(all.begin(), all.begin() + static_cast<long>(half));

@@ -18,6 +18,7 @@ namespace tactip {
 struct BenchOptions {
   std::string out_dir = "bench-results";  ///< where bench.json, bench.csv and models go
   std::string dataset;      ///< existing dataset to use; empty = generate the standard one
+  std::string sensor;       ///< sensor of `dataset` whose pins to read; empty = its first
   int runs = 40;            ///< runs of the standard dataset (first half train, second half test)
   std::uint64_t seed = 2026;  ///< dataset and training seed
   int jobs = 0;             ///< generation threads (0 = all cores)

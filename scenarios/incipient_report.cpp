@@ -41,7 +41,7 @@ std::pair<double, double> MeanStd(const std::vector<double>& v) {
 
 }  // namespace
 
-IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParams& params) {
+IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& sensor, const IncipientParams& params) {
   IncipientRunMetrics m;
   m.run = r.index;
   m.retract_start_s = Attr(r, "retract_start_s");
@@ -51,13 +51,13 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParam
   m.lead_gross_s = m.gross_onset_s - m.incipient_onset_s;
   m.lead_fall_s = m.fall_s - m.incipient_onset_s;
   m.pre_slip_fraction = Attr(r, "pre_slip_fraction");
-  const size_t T = r.frames(), N = static_cast<size_t>(r.n_pins);
+  const size_t T = r.frames(), N = static_cast<size_t>(sensor.n_pins);
   const size_t f0 = std::isnan(m.retract_start_s) ? 0 : FrameAt(r, m.retract_start_s);
   // Tracking window: the retraction up to kPeakWindowS after the fall (incipient phase and
   // the gross-slip release).
   const size_t f_end = std::isnan(m.fall_s) ? T : std::min(T, FrameAt(r, m.fall_s + kPeakWindowS) + 1);
   auto radius = [&](size_t i) {  // distance of pin i's marker from the sensor axis, at frame 0
-    return std::hypot(r.pos_m[i * 3 + 1], r.pos_m[i * 3 + 2]);
+    return std::hypot(sensor.pos_m[i * 3 + 1], sensor.pos_m[i * 3 + 2]);
   };
 
   // Which pins slip first: at the incipient onset frame.
@@ -67,10 +67,10 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParam
     double rs = 0.0, rc = 0.0;
     int ns = 0, nc = 0;
     for (size_t i = 0; f < T && i < N; ++i) {
-      if (!r.pin_contact[f * N + i]) continue;
+      if (!sensor.pin_contact[f * N + i]) continue;
       rc += radius(i);
       ++nc;
-      if (r.pin_slip[f * N + i]) {
+      if (sensor.pin_slip[f * N + i]) {
         rs += radius(i);
         ++ns;
       }
@@ -82,15 +82,15 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParam
   // since the retraction started, of the pins in contact then.
   m.tracking_correlation = kNaN;
   m.tracking_error = kNaN;
-  if (!r.external_m.empty() && f0 < T) {
+  if (!sensor.external_m.empty() && f0 < T) {
     double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, se = 0, sn = 0;
     long n = 0;
     for (size_t f = f0; f < f_end; ++f) {
       for (size_t i = 0; i < N; ++i) {
-        if (!r.pin_contact[f0 * N + i]) continue;
+        if (!sensor.pin_contact[f0 * N + i]) continue;
         for (int k = 1; k <= 2; ++k) {
-          const double din = r.pos_m[(f * N + i) * 3 + k] - r.pos_m[(f0 * N + i) * 3 + k];
-          const double dex = r.external_m[(f * N + i) * 3 + k] - r.external_m[(f0 * N + i) * 3 + k];
+          const double din = sensor.pos_m[(f * N + i) * 3 + k] - sensor.pos_m[(f0 * N + i) * 3 + k];
+          const double dex = sensor.external_m[(f * N + i) * 3 + k] - sensor.external_m[(f0 * N + i) * 3 + k];
           sx += dex;
           sy += din;
           sxx += dex * dex;
@@ -118,9 +118,9 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParam
   for (size_t f = f0; f < T; ++f) {
     frame.time_s = r.time[f];
     for (size_t i = 0; i < N; ++i) {
-      frame.pos_px(static_cast<Eigen::Index>(i), 0) = r.pos_px[(f * N + i) * 2];
-      frame.pos_px(static_cast<Eigen::Index>(i), 1) = r.pos_px[(f * N + i) * 2 + 1];
-      frame.valid[i] = r.valid[f * N + i];
+      frame.pos_px(static_cast<Eigen::Index>(i), 0) = sensor.pos_px[(f * N + i) * 2];
+      frame.pos_px(static_cast<Eigen::Index>(i), 1) = sensor.pos_px[(f * N + i) * 2 + 1];
+      frame.valid[i] = sensor.valid[f * N + i];
     }
     if (det.Update(frame).slip) {
       m.detector_alarm_s = r.time[f];
@@ -142,9 +142,9 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParam
       double s = 0.0;
       int n = 0;
       for (size_t i = 0; i < N; ++i) {
-        if (!r.valid[f * N + i] || !r.valid[(f - 1) * N + i]) continue;
-        s += std::hypot(r.pos_px[(f * N + i) * 2] - r.pos_px[((f - 1) * N + i) * 2],
-                        r.pos_px[(f * N + i) * 2 + 1] - r.pos_px[((f - 1) * N + i) * 2 + 1]);
+        if (!sensor.valid[f * N + i] || !sensor.valid[(f - 1) * N + i]) continue;
+        s += std::hypot(sensor.pos_px[(f * N + i) * 2] - sensor.pos_px[((f - 1) * N + i) * 2],
+                        sensor.pos_px[(f * N + i) * 2 + 1] - sensor.pos_px[((f - 1) * N + i) * 2 + 1]);
         ++n;
       }
       if (n > 0) peak = std::max(peak, s / n);
@@ -152,6 +152,10 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParam
     m.peak_speed_px = peak;
   }
   return m;
+}
+
+IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const IncipientParams& params) {
+  return AnalyzeIncipientRun(r, r.sensors.front(), params);
 }
 
 IncipientSummary SummarizeIncipient(const std::vector<IncipientRunMetrics>& runs) {

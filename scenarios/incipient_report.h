@@ -36,8 +36,11 @@ struct IncipientRunMetrics {
   double peak_speed_px = 0.0;       ///< gross-slip signal: peak mean pin speed within 0.3 s of the onset, px/frame
 };
 
-/// Analyses one run (needs the full record). The detector is reset at the start of the
-/// retraction and fed every frame from then on.
+/// Analyses one run (needs the full record) as sensor `sensor` of it recorded it. The
+/// detector is reset at the start of the retraction and fed every frame from then on.
+IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& run, const SensorRecord& sensor,
+                                        const IncipientParams& params);
+/// AnalyzeIncipientRun of the run's first sensor.
 IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& run, const IncipientParams& params);
 
 /// Summary over runs: means and spreads, counts.

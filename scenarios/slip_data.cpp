@@ -38,38 +38,65 @@ std::vector<int> ParseRunList(const std::string& text) {
   return {out.begin(), out.end()};
 }
 
+const SensorRecord& ChooseSensor(const RunRecord& run, const std::string& name, const std::string& path) {
+  if (name.empty() && !run.sensors.empty()) return run.sensors.front();
+  if (const SensorRecord* s = run.FindSensor(name)) return *s;
+  throw InputError(fmt::format("--sensor '{}': dataset '{}' has no such sensor (its sensors: {})", name, path,
+                               SensorNames(run)));
+}
+
+void CheckSensorOption(const std::string& path, const std::string& name) {
+  const DatasetReader reader(path);
+  ChooseSensor(reader.ReadRunSummary(reader.run_indices().front()), name, path);
+}
+
+namespace {
+
+/// The frames of sensor `s` of run `rec` (read from `path`), exactly what a camera gives:
+/// noisy pixel positions and detection flags.
+std::vector<PinFrame> SensorFrames(const RunRecord& rec, const SensorRecord& s, const std::string& path) {
+  const size_t T = rec.frames(), N = static_cast<size_t>(s.n_pins);
+  std::vector<PinFrame> frames(T);
+  for (size_t f = 0; f < T; ++f) {
+    PinFrame& pf = frames[f];
+    pf.time_s = rec.time[f];
+    pf.pos_px.resize(static_cast<Eigen::Index>(N), 2);
+    pf.valid.assign(s.valid.begin() + f * N, s.valid.begin() + (f + 1) * N);
+    for (size_t i = 0; i < N; ++i) {
+      const float u = s.pos_px[(f * N + i) * 2], v = s.pos_px[(f * N + i) * 2 + 1];
+      if (!std::isfinite(u) || !std::isfinite(v)) {
+        throw InputError(fmt::format("dataset '{}' run {} frame {} pin {}: position is not a finite number", path,
+                                     rec.index, f, i));
+      }
+      pf.pos_px(static_cast<Eigen::Index>(i), 0) = u;
+      pf.pos_px(static_cast<Eigen::Index>(i), 1) = v;
+    }
+  }
+  return frames;
+}
+
+}  // namespace
+
 std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
-                                        bool score_onset_frame) {
+                                        bool score_onset_frame, const std::string& sensor) {
   const DatasetReader reader(path);
   std::vector<int> wanted = runs.empty() ? reader.run_indices() : runs;
-  std::vector<LabeledRun> out;
   for (int idx : wanted) {
     if (!std::binary_search(reader.run_indices().begin(), reader.run_indices().end(), idx)) {
       throw InputError(fmt::format("dataset '{}' has no run {} (it has {} runs)", path, idx,
                                    reader.run_indices().size()));
     }
+  }
+  // The sensor is checked before any run is read in full.
+  ChooseSensor(reader.ReadRunSummary(wanted.front()), sensor, path);
+  std::vector<LabeledRun> out;
+  for (int idx : wanted) {
     const RunRecord rec = reader.ReadRun(idx);
     LabeledRun run;
     run.run = idx;
-    const size_t T = rec.frames(), N = static_cast<size_t>(rec.n_pins);
+    const size_t T = rec.frames();
     if (T >= 2) run.frame_rate_hz = (T - 1) / (rec.time.back() - rec.time.front());
-    // Frames: noisy pixel positions and detection flags, exactly what a camera gives.
-    run.frames.resize(T);
-    for (size_t f = 0; f < T; ++f) {
-      PinFrame& pf = run.frames[f];
-      pf.time_s = rec.time[f];
-      pf.pos_px.resize(static_cast<Eigen::Index>(N), 2);
-      pf.valid.assign(rec.valid.begin() + f * N, rec.valid.begin() + (f + 1) * N);
-      for (size_t i = 0; i < N; ++i) {
-        const float u = rec.pos_px[(f * N + i) * 2], v = rec.pos_px[(f * N + i) * 2 + 1];
-        if (!std::isfinite(u) || !std::isfinite(v)) {
-          throw InputError(fmt::format("dataset '{}' run {} frame {} pin {}: position is not a finite number", path,
-                                       idx, f, i));
-        }
-        pf.pos_px(static_cast<Eigen::Index>(i), 0) = u;
-        pf.pos_px(static_cast<Eigen::Index>(i), 1) = v;
-      }
-    }
+    run.frames = SensorFrames(rec, ChooseSensor(rec, sensor, path), path);
     // Ground truth: labelled window from the retraction, onset from the exact onset time.
     auto attr = [&](const char* k) {
       auto it = rec.attrs.find(k);
@@ -98,12 +125,17 @@ std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vect
   return out;
 }
 
-std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs) {
+std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs,
+                                   const std::string& sensor) {
   auto ends_with = [&](const char* s) {
     const std::string x(s);
     return path.size() >= x.size() && path.compare(path.size() - x.size(), x.size(), x) == 0;
   };
   if (ends_with(".csv")) {
+    if (!sensor.empty()) {
+      throw InputError(fmt::format("--sensor '{}': '{}' is a CSV recording of one sensor; --sensor picks a sensor of "
+                                   "an HDF5 dataset", sensor, path));
+    }
     LabeledRun run;
     run.frames = ReadPinCsv(path);
     if (run.frames.size() >= 2) {
@@ -111,7 +143,7 @@ std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<in
     }
     return {std::move(run)};
   }
-  return LoadDatasetRuns(path, runs);
+  return LoadDatasetRuns(path, runs, false, sensor);
 }
 
 }  // namespace tactip

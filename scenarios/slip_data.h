@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "detectors/detector.h"
+#include "sensors/dataset.h"
 
 namespace tactip {
 
@@ -13,18 +14,30 @@ namespace tactip {
 /// throws InputError on malformed text.
 std::vector<int> ParseRunList(const std::string& text);
 
-/// Reads runs of an HDF5 dataset as labelled frame sequences. `runs` empty = all runs.
-/// The labelled window starts at the run's retraction; the onset frame is the first
-/// frame at or after `gross_slip_onset_s`. That frame's velocity spans the onset (part
-/// static, part slip), so unless `score_onset_frame` is set it is a transition frame and
-/// the slip frames start at the next one. Throws InputError for a missing/corrupt file
-/// or a run that is not in the dataset.
-std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
-                                        bool score_onset_frame = false);
+/// The sensor of `run` (read from dataset `path`) named `name`, or its first sensor when
+/// `name` is empty. Throws InputError "--sensor 'NAME': dataset 'PATH' has no such sensor
+/// (its sensors: ...)" otherwise.
+const SensorRecord& ChooseSensor(const RunRecord& run, const std::string& name, const std::string& path);
 
-/// Reads pin frames from the project's HDF5 datasets or from a real-TacTip CSV
-/// recording (by extension: .h5/.hdf5 or .csv). CSV input is one run (index 0) with no
-/// ground truth. Throws InputError naming the file and problem.
-std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs);
+/// Throws ChooseSensor's InputError unless the first run of dataset `path` has sensor
+/// `name` ("" = the first); reads only that run's summary.
+void CheckSensorOption(const std::string& path, const std::string& name);
+
+/// Reads runs of an HDF5 dataset as labelled frame sequences, as sensor `sensor` ("" =
+/// the dataset's first) recorded them. `runs` empty = all runs. The labelled window
+/// starts at the run's retraction; the onset frame is the first frame at or after
+/// `gross_slip_onset_s`. That frame's velocity spans the onset (part static, part slip),
+/// so unless `score_onset_frame` is set it is a transition frame and the slip frames start
+/// at the next one. Throws InputError for a missing/corrupt file, a run that is not in
+/// the dataset or a sensor it does not have.
+std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
+                                        bool score_onset_frame = false, const std::string& sensor = "");
+
+/// Reads pin frames from the project's HDF5 datasets (of sensor `sensor`, "" = the first)
+/// or from a real-TacTip CSV recording (by extension: .h5/.hdf5 or .csv). CSV input is
+/// one run (index 0) of one sensor with no ground truth: a `sensor` name is refused.
+/// Throws InputError naming the file and problem.
+std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs,
+                                   const std::string& sensor = "");
 
 }  // namespace tactip

@@ -115,8 +115,12 @@ bool AllFinite(const RunRecord& r) {
   const auto finite = [](const auto& v) {
     return std::all_of(v.begin(), v.end(), [](auto x) { return std::isfinite(static_cast<double>(x)); });
   };
-  return finite(r.time) && finite(r.pos_px) && finite(r.pos_m) && finite(r.external_px) && finite(r.external_m) &&
-         finite(r.normal_N) && finite(r.tangential_N) && finite(r.object_height_m);
+  const auto sensor_finite = [&](const SensorRecord& s) {
+    return finite(s.pos_px) && finite(s.pos_m) && finite(s.external_px) && finite(s.external_m) &&
+           finite(s.normal_N) && finite(s.tangential_N);
+  };
+  return finite(r.time) && std::all_of(r.sensors.begin(), r.sensors.end(), sensor_finite) &&
+         finite(r.object_height_m) && finite(r.actions.controls);
 }
 
 std::string Csv(const std::string& s) {

@@ -12,7 +12,7 @@ namespace tactip {
 namespace {
 
 /// Throws "<source>: run_NNNN/<array> <problem>".
-[[noreturn]] void Refuse(const RunRecord& run, const std::string& source, const char* array,
+[[noreturn]] void Refuse(const RunRecord& run, const std::string& source, const std::string& array,
                          const std::string& problem) {
   throw InputError(fmt::format("{}: {}/{} {}", source, RunGroupName(run.index), array, problem));
 }
@@ -23,11 +23,11 @@ std::string Position(size_t i, size_t n_pins, size_t width) {
   return fmt::format("frame {}, pin {}", i / (n_pins * width), (i / width) % n_pins);
 }
 
-/// Refuses the first non-finite value of a (T) array (width 0) or a (T, N, width) array.
+/// Refuses the first non-finite value of a (T) array (width 0) or a (T, N, width) array
+/// of an N-pin sensor (n 1 for arrays without a pin axis).
 template <class T>
-void CheckFinite(const RunRecord& run, const std::string& source, const char* array, const std::vector<T>& values,
-                 size_t width) {
-  const size_t n = static_cast<size_t>(run.n_pins);
+void CheckFinite(const RunRecord& run, const std::string& source, const std::string& array,
+                 const std::vector<T>& values, size_t width, size_t n = 1) {
   for (size_t i = 0; i < values.size(); ++i) {
     if (!std::isfinite(values[i])) {
       Refuse(run, source, array, fmt::format("is {} at {} (must be a finite number)", values[i], Position(i, n, width)));
@@ -49,18 +49,38 @@ void CheckRunTimes(const RunRecord& run, const std::string& source) {
   }
 }
 
-void CheckRunValues(const RunRecord& run, const std::string& source) {
-  CheckFinite(run, source, "pins/pos_px", run.pos_px, 2);
-  CheckFinite(run, source, "pins/pos_m", run.pos_m, 3);
-  CheckFinite(run, source, "contact/normal_N", run.normal_N, 1);
-  CheckFinite(run, source, "contact/tangential_N", run.tangential_N, 2);
+void CheckRunValues(const RunRecord& run, const std::string& source, int layout_version) {
+  for (const SensorRecord& s : run.sensors) {
+    // Each sensor's arrays, named by their path in the file.
+    const std::string at = SensorPath(layout_version, s.name);
+    const size_t n = static_cast<size_t>(s.n_pins);
+    CheckFinite(run, source, at + "pins/pos_px", s.pos_px, 2, n);
+    CheckFinite(run, source, at + "pins/pos_m", s.pos_m, 3, n);
+    CheckFinite(run, source, at + "contact/normal_N", s.normal_N, 1, n);
+    CheckFinite(run, source, at + "contact/tangential_N", s.tangential_N, 2, n);
+    CheckFinite(run, source, at + "external/pos_px", s.external_px, 2, n);
+    CheckFinite(run, source, at + "external/pos_m", s.external_m, 3, n);
+    for (size_t i = 0; i < s.valid.size(); ++i) {
+      if (s.valid[i] > 1) {
+        Refuse(run, source, at + "pins/valid",
+               fmt::format("is {} at {} (must be 0 or 1)", s.valid[i], Position(i, n, 1)));
+      }
+    }
+  }
   CheckFinite(run, source, "object/height_m", run.object_height_m, 0);
-  CheckFinite(run, source, "external/pos_px", run.external_px, 2);
-  CheckFinite(run, source, "external/pos_m", run.external_m, 3);
-  const size_t n = static_cast<size_t>(run.n_pins);
-  for (size_t i = 0; i < run.valid.size(); ++i) {
-    if (run.valid[i] > 1) {
-      Refuse(run, source, "pins/valid", fmt::format("is {} at {} (must be 0 or 1)", run.valid[i], Position(i, n, 1)));
+  // The controls: (T, U), named by frame.
+  const size_t u = run.actions.actuators.size();
+  for (size_t i = 0; i < run.actions.controls.size(); ++i) {
+    if (!std::isfinite(run.actions.controls[i])) {
+      Refuse(run, source, "actions/controls",
+             fmt::format("is {} at frame {}, actuator {} (must be a finite number)", run.actions.controls[i], i / u,
+                         run.actions.actuators[i % u]));
+    }
+  }
+  for (size_t k = 0; k < run.actions.list.size(); ++k) {
+    if (!std::isfinite(run.actions.list[k].time_s)) {
+      Refuse(run, source, "actions/time", fmt::format("is {} at action {} (must be a finite number)",
+                                                      run.actions.list[k].time_s, k));
     }
   }
 }

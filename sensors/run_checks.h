@@ -15,6 +15,8 @@ void CheckRunTimes(const RunRecord& run, const std::string& source);
 
 /// Throws InputError "<source>: run_NNNN/<array> ..." naming the frame (and pin) of the
 /// first non-finite value of a float array, or of a detection flag (pins/valid) not 0 or 1.
-void CheckRunValues(const RunRecord& run, const std::string& source);
+/// A sensor's arrays are named by their path in a file of layout `layout_version`
+/// ("run_0003/sensors/tactip/pins/pos_px"; layout 1: "run_0003/pins/pos_px").
+void CheckRunValues(const RunRecord& run, const std::string& source, int layout_version = kDatasetLayoutVersion);
 
 }  // namespace tactip

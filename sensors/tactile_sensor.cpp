@@ -98,7 +98,7 @@ void TactileSensor::ReadContacts(Simulation& sim) {
   labels_ = LabelFrame(samples_, spec_.labels, pin_contact_.data(), pin_slip_.data());
 }
 
-const PinFrame& TactileSensor::Capture(const Simulation& sim, double time_s, RunRecord& rec) {
+const PinFrame& TactileSensor::Capture(const Simulation& sim, double time_s, SensorRecord& rec) {
   pose_ = {sim.BodyPos(ids_.body), sim.BodyRot(ids_.body)};
   CapturePins(sim, rec);
   if (spec_.external.enabled) CaptureExternal(sim, rec);
@@ -107,7 +107,7 @@ const PinFrame& TactileSensor::Capture(const Simulation& sim, double time_s, Run
   return frame_;
 }
 
-void TactileSensor::CapturePins(const Simulation& sim, RunRecord& rec) {
+void TactileSensor::CapturePins(const Simulation& sim, SensorRecord& rec) {
   // Pin inner ends in the sensor frame, and their image positions. A fingerprint ridge
   // rocks under its tangential contact force (quasi-statically, deflection f_t / k_rock at
   // the contact point), which moves the inner marker the other way.
@@ -135,7 +135,7 @@ void TactileSensor::CapturePins(const Simulation& sim, RunRecord& rec) {
   rec.valid.insert(rec.valid.end(), valid_.begin(), valid_.end());
 }
 
-void TactileSensor::CaptureExternal(const Simulation& sim, RunRecord& rec) {
+void TactileSensor::CaptureExternal(const Simulation& sim, SensorRecord& rec) {
   // External markers: the outer contact points, seen through the plate.
   for (int i = 0; i < n_; ++i) {
     const auto q = pose_.Point(sim.SitePos(ids_.pin_outer_site[i]));
@@ -149,7 +149,7 @@ void TactileSensor::CaptureExternal(const Simulation& sim, RunRecord& rec) {
   rec.external_px.insert(rec.external_px.end(), ext_px_.begin(), ext_px_.end());
 }
 
-void TactileSensor::CaptureContacts(RunRecord& rec) {
+void TactileSensor::CaptureContacts(SensorRecord& rec) {
   // Contact forces (tangential in sensor y, z) and the stick/slip labels.
   for (int i = 0; i < n_; ++i) {
     normal_N_[i] = contacts_[i].normal_N;

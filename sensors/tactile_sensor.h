@@ -54,9 +54,10 @@ class TactileSensor {
   /// Reads the pins' contacts at the current step and labels them.
   void ReadContacts(Simulation& sim);
   /// One camera frame of the current state (contacts as last read): appends positions,
-  /// forces and labels to `rec` (one frame's worth, not the time) and returns the frame
-  /// the camera delivers, time-stamped `time_s`.
-  const PinFrame& Capture(const Simulation& sim, double time_s, RunRecord& rec);
+  /// forces and labels to this sensor's record `rec` (one frame's worth; not the time, nor
+  /// the gross-slip label, which the run decides) and returns the frame the camera
+  /// delivers, time-stamped `time_s`.
+  const PinFrame& Capture(const Simulation& sim, double time_s, SensorRecord& rec);
 
   const std::string& name() const { return spec_.name; }
   int n_pins() const { return n_; }
@@ -78,9 +79,9 @@ class TactileSensor {
   const PinFrame& frame() const { return frame_; }
 
  private:
-  void CapturePins(const Simulation& sim, RunRecord& rec);
-  void CaptureExternal(const Simulation& sim, RunRecord& rec);
-  void CaptureContacts(RunRecord& rec);
+  void CapturePins(const Simulation& sim, SensorRecord& rec);
+  void CaptureExternal(const Simulation& sim, SensorRecord& rec);
+  void CaptureContacts(SensorRecord& rec);
   void FillFrame(double time_s);
 
   const TactileSensorSpec spec_;

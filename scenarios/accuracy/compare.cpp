@@ -24,14 +24,16 @@ double EventError(double a, double b) {
 }  // namespace
 
 RunDifference CompareRuns(const RunRecord& run, const RunRecord& ref) {
-  if (run.n_pins != ref.n_pins) throw std::invalid_argument("CompareRuns: the runs have different pin counts");
+  const SensorRecord& a = run.sensors.front();
+  const SensorRecord& b = ref.sensors.front();
+  if (a.n_pins != b.n_pins) throw std::invalid_argument("CompareRuns: the runs have different pin counts");
   RunDifference d;
   const double onset = AttrOr(run, "gross_slip_onset_s"), onset_ref = AttrOr(ref, "gross_slip_onset_s");
   d.onset_error_s = EventError(onset, onset_ref);
   d.incipient_error_s = EventError(AttrOr(run, "incipient_onset_s"), AttrOr(ref, "incipient_onset_s"));
   // Frames both runs have, up to the earlier onset (after it the runs diverge by design).
   const double until = std::min(std::isnan(onset) ? 1e300 : onset, std::isnan(onset_ref) ? 1e300 : onset_ref);
-  const size_t N = static_cast<size_t>(run.n_pins);
+  const size_t N = static_cast<size_t>(a.n_pins);
   const size_t T = std::min(run.frames(), ref.frames());
   double sq = 0.0;
   long pin_frames = 0, contacting = 0, differ = 0;
@@ -39,12 +41,12 @@ RunDifference CompareRuns(const RunRecord& run, const RunRecord& ref) {
     ++d.frames_compared;
     for (size_t i = 0; i < N; ++i) {
       const size_t k = f * N + i;
-      const double du = run.pos_px[2 * k] - ref.pos_px[2 * k], dv = run.pos_px[2 * k + 1] - ref.pos_px[2 * k + 1];
+      const double du = a.pos_px[2 * k] - b.pos_px[2 * k], dv = a.pos_px[2 * k + 1] - b.pos_px[2 * k + 1];
       sq += du * du + dv * dv;
       ++pin_frames;
-      if (!run.pin_contact[k] && !ref.pin_contact[k]) continue;
+      if (!a.pin_contact[k] && !b.pin_contact[k]) continue;
       ++contacting;
-      differ += (run.pin_contact[k] != ref.pin_contact[k] || run.pin_slip[k] != ref.pin_slip[k]) ? 1 : 0;
+      differ += (a.pin_contact[k] != b.pin_contact[k] || a.pin_slip[k] != b.pin_slip[k]) ? 1 : 0;
     }
   }
   d.traj_rms_px = pin_frames > 0 ? std::sqrt(sq / static_cast<double>(pin_frames)) : 0.0;

@@ -15,8 +15,9 @@ struct RunDifference {
   int frames_compared = 0;
 };
 
-/// Compares `run` with `ref` frame by frame (both sampled at the same camera rate).
-/// Throws std::invalid_argument when their pin counts differ.
+/// Compares `run` with `ref` frame by frame (both sampled at the same camera rate), as
+/// their first sensors recorded them. Throws std::invalid_argument when their pin counts
+/// differ.
 RunDifference CompareRuns(const RunRecord& run, const RunRecord& ref);
 
 }  // namespace tactip

@@ -13,6 +13,7 @@
 
 #include "detectors/pin_frame.h"
 #include "scenarios/rail/rail_schedule.h"
+#include "sensors/dataset.h"  // ControllerAction
 
 namespace tactip {
 
@@ -27,12 +28,6 @@ struct ArmTargets {
 struct FrameInput {
   double time_s = 0.0;                   ///< frame time (s)
   std::vector<const PinFrame*> frames;   ///< one per tactile sensor, in scene order
-};
-
-/// One thing a controller did, for the dataset's actions/ group.
-struct ControllerAction {
-  double time_s = 0.0;  ///< when (s)
-  std::string what;     ///< e.g. "slip_declared", "catch", "stop"
 };
 
 /// Drives the arm of one rail run. One instance per run.

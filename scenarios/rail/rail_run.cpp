@@ -105,9 +105,13 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
 void RailRun::InitRecord(RunRecord& rec) const {
   rec = RunRecord{};
   rec.index = index_;
-  rec.n_pins = n_;
   const size_t expect = static_cast<size_t>((sched_.give_up + 1.0) * c_.sensor.frame_rate_hz);
   rec.time.reserve(std::min<size_t>(expect, 200000));
+  // The scene's one tactile sensor, and the arm's two servos as the controls.
+  SensorRecord& s = rec.sensors.emplace_back();
+  s.name = sensor_.name();
+  s.n_pins = n_;
+  rec.actions.actuators = {RailNames::kServoX, RailNames::kServoZ};
 }
 
 void RailRun::RecordControls() {
@@ -220,12 +224,16 @@ void RailRun::TrackPrediction(double t) {
 }
 
 void RailRun::RecordFrame(double t, double tf, RunRecord& rec) {
-  // The sensor's frame, the gross-slip label, the object's height; then plausibility.
+  // The sensor's frame, the gross-slip label, the object's height, the controls; then plausibility.
   rec.time.push_back(tf);
-  sensor_.Capture(*sim_, tf, rec);
-  rec.gross_slip.push_back(gross_);
+  SensorRecord& sensor = rec.sensors.front();
+  sensor_.Capture(*sim_, tf, sensor);
+  sensor.gross_slip.push_back(gross_);
   TrackIncipient(t);
   rec.object_height_m.push_back(sim_->BodyPos(im_.slider_body)[2] - RailLayout::kAxisHeight);
+  // The arm's servo targets at this frame, in actuator order (servo_x, servo_z).
+  rec.actions.controls.push_back(arm_.x_m);
+  rec.actions.controls.push_back(arm_.z_m);
   CheckPlausible(t);
 }
 
@@ -346,8 +354,9 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   rec.attrs["energy_gain"] = sum_.health.energy_gain;
   rec.text_attrs["health_reason"] = sum_.health.reason;
   rec.text_attrs["stimulus"] = c_.rail.stimulus;
-  rec.text_attrs["skin_pattern"] = c_.skin.pattern;
+  rec.sensors.front().text_attrs["skin_pattern"] = c_.skin.pattern;
   sum_.actions = controller_->Actions();
+  rec.actions.list = sum_.actions;
   sum_.controller_figures = controller_->Figures();
   rec.CheckShapes();
   sum_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();

@@ -122,19 +122,19 @@ TEST_F(AccuracyCliTest, TimestepsAreSweptAroundTheScenesOwnDefaultStep) {
 
 TEST(CompareRunsTest, IdenticalRunsDifferByNothingAndAMissedOnsetIsInfinite) {
   RunRecord a;
-  a.n_pins = 1;
+  a.sensors.emplace_back().n_pins = 1;
   a.time = {0.0, 0.01};
-  a.pos_px = {1, 1, 2, 2};
-  a.pin_contact = {1, 1};
-  a.pin_slip = {0, 1};
+  a.sensors[0].pos_px = {1, 1, 2, 2};
+  a.sensors[0].pin_contact = {1, 1};
+  a.sensors[0].pin_slip = {0, 1};
   a.attrs["gross_slip_onset_s"] = 0.02;
   RunRecord b = a;
   RunDifference d = CompareRuns(a, b);
   EXPECT_EQ(d.onset_error_s, 0.0);
   EXPECT_EQ(d.traj_rms_px, 0.0);
   EXPECT_EQ(d.label_disagreement, 0.0);
-  b.pos_px = {1, 4, 2, 2};  // 3 px off in one of two frames
-  b.pin_slip = {1, 1};      // one label of two differs
+  b.sensors[0].pos_px = {1, 4, 2, 2};  // 3 px off in one of two frames
+  b.sensors[0].pin_slip = {1, 1};      // one label of two differs
   b.attrs["gross_slip_onset_s"] = std::nan("");
   d = CompareRuns(a, b);
   EXPECT_TRUE(std::isinf(d.onset_error_s));

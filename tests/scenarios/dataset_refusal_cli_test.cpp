@@ -53,17 +53,18 @@ class DatasetRefusalCliTest : public testing::CliFolderTest {
   static RunRecord FourFrameRun(int index) {
     RunRecord r;
     r.index = index;
-    r.n_pins = 2;
+    SensorRecord& s = r.sensors.emplace_back();
+    s.n_pins = 2;
     r.time = {0.0, 0.01, 0.02, 0.03};
-    for (int k = 0; k < 16; ++k) r.pos_px.push_back(100.0f + static_cast<float>(k));
-    r.valid.assign(8, 1);
-    r.pos_m.assign(24, 0.01f);
-    r.gross_slip = {0, 0, 1, 1};
-    r.pin_slip.assign(8, 0);
-    r.pin_contact.assign(8, 1);
-    r.incipient.assign(4, 0);
-    r.normal_N.assign(8, 0.5f);
-    r.tangential_N.assign(16, 0.1f);
+    for (int k = 0; k < 16; ++k) s.pos_px.push_back(100.0f + static_cast<float>(k));
+    s.valid.assign(8, 1);
+    s.pos_m.assign(24, 0.01f);
+    s.gross_slip = {0, 0, 1, 1};
+    s.pin_slip.assign(8, 0);
+    s.pin_contact.assign(8, 1);
+    s.incipient.assign(4, 0);
+    s.normal_N.assign(8, 0.5f);
+    s.tangential_N.assign(16, 0.1f);
     r.object_height_m = {0.05, 0.05, 0.049, 0.048};
     r.attrs["retract_start_s"] = 0.0;
     r.attrs["gross_slip_onset_s"] = 0.02;
@@ -112,15 +113,15 @@ TEST_F(DatasetRefusalCliTest, EveryReadingCommandRefusesADamagedDataset) {
        ": run_0001/time is not increasing: frame 1 at 0.5 s is not after frame 0 at 0.5 s", true},
       {"inf-position",
        [&](hid_t f) {
-         std::vector<float> px = FourFrameRun(1).pos_px;
+         std::vector<float> px = FourFrameRun(1).sensors[0].pos_px;
          px[2 * (2 * 3 + 1)] = -inf;  // frame 3, pin 1, u
-         Overwrite(f, "/runs/run_0001/pins/pos_px", H5T_NATIVE_FLOAT, px);
+         Overwrite(f, "/runs/run_0001/sensors/tactip/pins/pos_px", H5T_NATIVE_FLOAT, px);
        },
-       ": run_0001/pins/pos_px is -inf at frame 3, pin 1 (must be a finite number)", false},
+       ": run_0001/sensors/tactip/pins/pos_px is -inf at frame 3, pin 1 (must be a finite number)", false},
       {"no-frames",
        [](hid_t f) {
          MakeEmpty(f, "/runs/run_0001/time", H5T_IEEE_F64LE, {0});
-         MakeEmpty(f, "/runs/run_0001/pins/valid", H5T_STD_U8LE, {0, 2});
+         MakeEmpty(f, "/runs/run_0001/sensors/tactip/pins/valid", H5T_STD_U8LE, {0, 2});
        },
        ": run_0001/time has no frames (a run needs at least one)", true},
       {"no-runs",

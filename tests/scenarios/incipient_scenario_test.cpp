@@ -157,8 +157,9 @@ TEST_F(IncipientScenarioTest, SmoothSkinSlipsAllAtOnceWithoutIncipientPhase) {
   // shell carries all pins together tangentially).
   const size_t f0 = FrameAt(rec, retract + 1e-5), f1 = FrameAt(rec, gross);
   ASSERT_GT(f1, f0 + 100) << "too short a retraction to mean anything";
-  for (size_t f = f0; f < f1; ++f) EXPECT_EQ(rec.incipient[f], 0) << "partial slip at t = " << rec.time[f];
-  EXPECT_EQ(rec.incipient, PartialSlipLabels(rec.pin_contact, rec.pin_slip, rec.n_pins));
+  for (size_t f = f0; f < f1; ++f) EXPECT_EQ(rec.sensors[0].incipient[f], 0) << "partial slip at t = " << rec.time[f];
+  EXPECT_EQ(rec.sensors[0].incipient,
+            PartialSlipLabels(rec.sensors[0].pin_contact, rec.sensors[0].pin_slip, rec.sensors[0].n_pins));
 }
 
 TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyBeforeGrossSlip) {
@@ -179,7 +180,7 @@ TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyBeforeGrossSlip) {
     // The onset is the first partial-slip frame of the retraction (found from the frame
     // labels), and the lead runs from there to the gross onset.
     size_t f_on = FrameAt(rec, retract + 1e-5);
-    while (f_on < rec.frames() && !rec.incipient[f_on]) ++f_on;
+    while (f_on < rec.frames() && !rec.sensors[0].incipient[f_on]) ++f_on;
     ASSERT_LT(f_on, rec.frames()) << "no partial-slip frame in the retraction";
     EXPECT_NEAR(onset, rec.time[f_on], 1e-6);
     EXPECT_NEAR(Attr(rec, "incipient_lead_s"), gross - rec.time[f_on], 1e-6);
@@ -230,26 +231,27 @@ TEST_F(IncipientScenarioTest, IncipientLabelsAgreeWithPerPinLabelsFrameByFrame) 
                                                                            {"fingerprint-v1", 1}}) {
     SCOPED_TRACE(skin);
     const RunRecord& rec = Runs(skin, seed, {{"fingerprint-v2", 1}, {"fingerprint-v1", 1}}).rec;
-    ASSERT_EQ(rec.incipient.size(), rec.frames());
-    const auto derived = PartialSlipLabels(rec.pin_contact, rec.pin_slip, rec.n_pins);
+    ASSERT_EQ(rec.sensors[0].incipient.size(), rec.frames());
+    const auto derived = PartialSlipLabels(rec.sensors[0].pin_contact, rec.sensors[0].pin_slip, rec.sensors[0].n_pins);
     size_t partial = 0, mismatches = 0;
     for (size_t f = 0; f < rec.frames(); ++f) {
-      partial += rec.incipient[f];
-      if (rec.incipient[f] != derived[f]) {
+      partial += rec.sensors[0].incipient[f];
+      if (rec.sensors[0].incipient[f] != derived[f]) {
         if (++mismatches <= 5) ADD_FAILURE() << "frame " << f << " t = " << rec.time[f];
       }
     }
     EXPECT_EQ(mismatches, 0u);
     EXPECT_GT(partial, 0u) << "a fingerprint run with no partial-slip frame at all";
     // Slip labels imply contact; gross slip and partial slip exclude each other.
-    const size_t N = static_cast<size_t>(rec.n_pins);
-    for (size_t k = 0; k < rec.pin_slip.size(); ++k) {
-      if (rec.pin_slip[k] && !rec.pin_contact[k]) {
+    const size_t N = static_cast<size_t>(rec.sensors[0].n_pins);
+    for (size_t k = 0; k < rec.sensors[0].pin_slip.size(); ++k) {
+      if (rec.sensors[0].pin_slip[k] && !rec.sensors[0].pin_contact[k]) {
         ADD_FAILURE() << "pin " << k % N << " slips without contact in frame " << k / N;
         break;
       }
     }
-    for (size_t f = 0; f < rec.frames(); ++f) EXPECT_FALSE(rec.incipient[f] && rec.gross_slip[f]) << "frame " << f;
+    for (size_t f = 0; f < rec.frames(); ++f)
+      EXPECT_FALSE(rec.sensors[0].incipient[f] && rec.sensors[0].gross_slip[f]) << "frame " << f;
   }
 }
 
@@ -262,7 +264,7 @@ TEST_F(IncipientScenarioTest, SlipStartsAtTheOutermostContactRingAndSpreadsInwar
   for (const SimRun* r : RunSeeds("fingerprint-v2", kV2Seeds)) {
     const RunRecord& rec = r->rec;
     SCOPED_TRACE("run with friction " + std::to_string(r->sum.friction));
-    const size_t N = static_cast<size_t>(rec.n_pins);
+    const size_t N = static_cast<size_t>(rec.sensors[0].n_pins);
     ASSERT_EQ(N, lat.size());
     const double gross = Attr(rec, "gross_slip_onset_s");
     const double retract = Attr(rec, "retract_start_s");
@@ -272,9 +274,9 @@ TEST_F(IncipientScenarioTest, SlipStartsAtTheOutermostContactRingAndSpreadsInwar
     int outer_ring = -1;
     for (size_t f = 0; f < FrameAt(rec, gross); ++f) {
       for (size_t i = 0; i < N; ++i) {
-        if (!rec.pin_contact[f * N + i]) continue;
+        if (!rec.sensors[0].pin_contact[f * N + i]) continue;
         outer_ring = std::max(outer_ring, lat.pins[i].ring);
-        if (rec.pin_slip[f * N + i]) first_slip.emplace(lat.pins[i].ring, rec.time[f]);
+        if (rec.sensors[0].pin_slip[f * N + i]) first_slip.emplace(lat.pins[i].ring, rec.time[f]);
       }
     }
     ASSERT_GE(outer_ring, 2);
@@ -292,10 +294,10 @@ TEST_F(IncipientScenarioTest, SlipStartsAtTheOutermostContactRingAndSpreadsInwar
     long n_slip = 0, n_contact = 0;
     for (size_t f = FrameAt(rec, retract); f < FrameAt(rec, gross); ++f) {
       for (size_t i = 0; i < N; ++i) {
-        if (!rec.pin_contact[f * N + i]) continue;
+        if (!rec.sensors[0].pin_contact[f * N + i]) continue;
         contact_r += lat.pins[i].polar_rad;
         ++n_contact;
-        if (rec.pin_slip[f * N + i]) {
+        if (rec.sensors[0].pin_slip[f * N + i]) {
           slip_r += lat.pins[i].polar_rad;
           ++n_slip;
         }
@@ -312,15 +314,15 @@ TEST_F(IncipientScenarioTest, SlipStartsAtTheOutermostContactRingAndSpreadsInwar
 TEST_F(IncipientScenarioTest, ExternalCameraRecordsTheOuterContactPointsMirrored) {
   const RailScenarioConfig cfg = IncipientConfig("fingerprint-v2");
   const RunRecord& rec = Runs("fingerprint-v2", 1).rec;
-  const size_t T = rec.frames(), N = static_cast<size_t>(rec.n_pins);
-  ASSERT_EQ(rec.external_px.size(), T * N * 2);
-  ASSERT_EQ(rec.external_m.size(), T * N * 3);
+  const size_t T = rec.frames(), N = static_cast<size_t>(rec.sensors[0].n_pins);
+  ASSERT_EQ(rec.sensors[0].external_px.size(), T * N * 2);
+  ASSERT_EQ(rec.sensors[0].external_m.size(), T * N * 3);
   // Frame 0 (before contact): outer contact points on the ridge surface, inner markers
   // pin_length_mm inside it.
   const double r_out = cfg.skin.OuterRadiusMm() * 1e-3;
   for (size_t i = 0; i < N; ++i) {
-    const float* e = &rec.external_m[i * 3];
-    const float* p = &rec.pos_m[i * 3];
+    const float* e = &rec.sensors[0].external_m[i * 3];
+    const float* p = &rec.sensors[0].pos_m[i * 3];
     EXPECT_NEAR(std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]), r_out, 5e-5) << "pin " << i;
     EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), r_out - cfg.skin.pin_length_mm * 1e-3, 5e-5)
         << "pin " << i;
@@ -330,17 +332,19 @@ TEST_F(IncipientScenarioTest, ExternalCameraRecordsTheOuterContactPointsMirrored
   double sum_abs = 0.0, max_abs = 0.0;
   size_t mirrored = 0, right_of_axis = 0;
   for (size_t k = 0; k < T * N; ++k) {
-    const std::array<double, 3> q{rec.external_m[k * 3], rec.external_m[k * 3 + 1], rec.external_m[k * 3 + 2]};
+    const std::array<double, 3> q{rec.sensors[0].external_m[k * 3], rec.sensors[0].external_m[k * 3 + 1],
+                                  rec.sensors[0].external_m[k * 3 + 2]};
     const auto uv = cam.Project(q);
     for (int c = 0; c < 2; ++c) {
-      const double d = std::abs(uv[c] - rec.external_px[k * 2 + c]);
+      const double d = std::abs(uv[c] - rec.sensors[0].external_px[k * 2 + c]);
       sum_abs += d;
       max_abs = std::max(max_abs, d);
     }
     // Pins clearly on the +y side: left of centre outside, right of centre inside.
-    if (rec.pos_m[k * 3 + 1] > 2e-3) {
+    if (rec.sensors[0].pos_m[k * 3 + 1] > 2e-3) {
       ++right_of_axis;
-      if (rec.external_px[k * 2] < cfg.external.cx_px && rec.pos_px[k * 2] > cfg.sensor.cx_px) ++mirrored;
+      if (rec.sensors[0].external_px[k * 2] < cfg.external.cx_px && rec.sensors[0].pos_px[k * 2] > cfg.sensor.cx_px)
+        ++mirrored;
     }
   }
   // |N(0, 0.28)| has mean 0.22 px; the max over ~2e5 draws stays below 5 sigma.
@@ -356,10 +360,10 @@ TEST_F(IncipientScenarioTest, FlatRailWithoutExternalCameraRecordsNoExternalArra
   const RailScenario scenario(cfg);
   RunRecord rec;
   scenario.Run(0, 1, rec);
-  EXPECT_TRUE(rec.external_px.empty());
-  EXPECT_TRUE(rec.external_m.empty());
-  EXPECT_EQ(rec.incipient.size(), rec.frames());
-  EXPECT_EQ(rec.text_attrs.at("skin_pattern"), "smooth");
+  EXPECT_TRUE(rec.sensors[0].external_px.empty());
+  EXPECT_TRUE(rec.sensors[0].external_m.empty());
+  EXPECT_EQ(rec.sensors[0].incipient.size(), rec.frames());
+  EXPECT_EQ(rec.sensors[0].text_attrs.at("skin_pattern"), "smooth");
 }
 
 TEST_F(IncipientScenarioTest, V2MarkersTrackTheContactPointsBetterThanV1) {
@@ -400,8 +404,8 @@ TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttr
   const RunRecord& rec = Runs("fingerprint-v2", 1).rec;
   RunRecord no_external = rec;
   no_external.index = 1;
-  no_external.external_px.clear();
-  no_external.external_m.clear();
+  no_external.sensors[0].external_px.clear();
+  no_external.sensors[0].external_m.clear();
   const std::string path = (dir_ / "incipient.h5").string();
   {
     DatasetHeader h;
@@ -418,16 +422,16 @@ TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttr
   EXPECT_EQ(reader.header().scenario, "incipient");
   const RunRecord back = reader.ReadRun(0);
   EXPECT_EQ(back.frames(), rec.frames());
-  EXPECT_EQ(back.incipient, rec.incipient);
-  EXPECT_EQ(back.external_px, rec.external_px);
-  EXPECT_EQ(back.external_m, rec.external_m);
-  EXPECT_EQ(back.pin_slip, rec.pin_slip);
-  EXPECT_EQ(back.pin_contact, rec.pin_contact);
+  EXPECT_EQ(back.sensors[0].incipient, rec.sensors[0].incipient);
+  EXPECT_EQ(back.sensors[0].external_px, rec.sensors[0].external_px);
+  EXPECT_EQ(back.sensors[0].external_m, rec.sensors[0].external_m);
+  EXPECT_EQ(back.sensors[0].pin_slip, rec.sensors[0].pin_slip);
+  EXPECT_EQ(back.sensors[0].pin_contact, rec.sensors[0].pin_contact);
   for (const char* key : {"incipient_onset_s", "incipient_lead_s", "pre_slip_fraction", "gross_slip_onset_s",
                           "retract_start_s"}) {
     EXPECT_DOUBLE_EQ(Attr(back, key), Attr(rec, key)) << key;
   }
-  EXPECT_EQ(back.text_attrs.at("skin_pattern"), "fingerprint-v2");
+  EXPECT_EQ(back.sensors[0].text_attrs.at("skin_pattern"), "fingerprint-v2");
   EXPECT_EQ(back.text_attrs.at("stimulus"), "acrylic");
   // The report gives the same figures from the file as from memory.
   const IncipientRunMetrics a = AnalyzeIncipientRun(rec, IncipientParams{});
@@ -436,9 +440,9 @@ TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttr
   EXPECT_DOUBLE_EQ(a.lead_gross_s, b.lead_gross_s);
   // A run without the external camera reads back without external arrays.
   const RunRecord plain = reader.ReadRun(1);
-  EXPECT_TRUE(plain.external_px.empty());
-  EXPECT_TRUE(plain.external_m.empty());
-  EXPECT_EQ(plain.incipient, rec.incipient);
+  EXPECT_TRUE(plain.sensors[0].external_px.empty());
+  EXPECT_TRUE(plain.sensors[0].external_m.empty());
+  EXPECT_EQ(plain.sensors[0].incipient, rec.sensors[0].incipient);
   EXPECT_TRUE(std::isnan(AnalyzeIncipientRun(plain, IncipientParams{}).tracking_error));
 }
 

@@ -70,7 +70,7 @@ TEST_P(CoulombOnsetTest, SlipStartsWithinOneFrameOfCoulombThresholdWithoutCreep)
   // The first frame labelled gross slip is at most two frames after the onset (the
   // release can bounce every pin off the stimulus for the frame right after it).
   size_t first = 0;
-  while (first < rec.frames() && !(rec.time[first] >= s.retract_start_s && rec.gross_slip[first])) ++first;
+  while (first < rec.frames() && !(rec.time[first] >= s.retract_start_s && rec.sensors[0].gross_slip[first])) ++first;
   ASSERT_LT(first, rec.frames());
   EXPECT_GE(rec.time[first], s.gross_slip_onset_s - 1e-9);
   EXPECT_LT(rec.time[first], s.gross_slip_onset_s + 2.0 * frame + 1e-9);
@@ -106,11 +106,11 @@ TEST_F(RailPhysicsTest, ObjectFallsWithGravityAfterRelease) {
   const RailRunSummary s = scenario.Run(0, 1, rec);
   ASSERT_FALSE(std::isnan(s.object_fall_s));
   // Free flight: after the last frame with any pin in contact, above the end stop.
-  const size_t T = rec.frames(), N = static_cast<size_t>(rec.n_pins);
+  const size_t T = rec.frames(), N = static_cast<size_t>(rec.sensors[0].n_pins);
   size_t last_contact = 0;
   for (size_t f = 0; f < T; ++f) {
     for (size_t i = 0; i < N; ++i) {
-      if (rec.pin_contact[f * N + i]) last_contact = f;
+      if (rec.sensors[0].pin_contact[f * N + i]) last_contact = f;
     }
   }
   std::vector<double> t, h;
@@ -147,10 +147,10 @@ TEST_F(RailPhysicsTest, DefaultConfigRunRaisesNoWarningAndIsDeterministic) {
   const RailRunSummary sa = scenario.Run(3, 7, a);
   scenario.Run(3, 7, b);
   EXPECT_FALSE(std::isnan(sa.gross_slip_onset_s));
-  EXPECT_EQ(a.pos_px, b.pos_px);
-  EXPECT_EQ(a.pos_m, b.pos_m);
-  EXPECT_EQ(a.normal_N, b.normal_N);
-  EXPECT_EQ(a.pin_slip, b.pin_slip);
+  EXPECT_EQ(a.sensors[0].pos_px, b.sensors[0].pos_px);
+  EXPECT_EQ(a.sensors[0].pos_m, b.sensors[0].pos_m);
+  EXPECT_EQ(a.sensors[0].normal_N, b.sensors[0].normal_N);
+  EXPECT_EQ(a.sensors[0].pin_slip, b.sensors[0].pin_slip);
   ASSERT_EQ(a.attrs.size(), b.attrs.size());
   for (const auto& [key, value] : a.attrs) {
     // NaN marks events that did not happen; it must be NaN in both.
@@ -179,13 +179,13 @@ TEST_F(RailPhysicsTest, LabelsDoNotDependOnSlipTolerance) {
   }
   EXPECT_NEAR(onsets[0], onsets[1], 0.01);
   EXPECT_NEAR(onsets[1], onsets[2], 0.01);
-  const size_t N = static_cast<size_t>(recs[0].n_pins);
+  const size_t N = static_cast<size_t>(recs[0].sensors[0].n_pins);
   for (int k : {1, 2}) {
     size_t differ = 0, contact = 0;
     for (size_t f = 0; f < recs[0].frames() && recs[0].time[f] <= onsets[0] + 0.01; ++f) {
       for (size_t i = 0; i < N; ++i) {
-        contact += recs[0].pin_contact[f * N + i];
-        differ += recs[k].pin_slip[f * N + i] != recs[0].pin_slip[f * N + i];
+        contact += recs[0].sensors[0].pin_contact[f * N + i];
+        differ += recs[k].sensors[0].pin_slip[f * N + i] != recs[0].sensors[0].pin_slip[f * N + i];
       }
     }
     EXPECT_LT(static_cast<double>(differ), 0.01 * contact) << "tolerance " << tols[k];

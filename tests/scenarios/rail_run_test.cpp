@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace tactip {
 namespace {
@@ -38,6 +40,47 @@ class CountingController : public RailController {
   RailSchedule schedule_;
 };
 
+// Follows the schedule, remembers the targets in force at each frame, and reports one action.
+class TargetsRecordingController : public RailController {
+ public:
+  explicit TargetsRecordingController(const RailSchedule& s) : schedule_(s) {}
+  ArmTargets Targets(double t) override {
+    last_ = {schedule_.X(t), schedule_.Z(t)};
+    return last_;
+  }
+  void OnFrame(const FrameInput&) override {
+    at_frames.push_back(last_.x_m);
+    at_frames.push_back(last_.z_m);
+  }
+  bool Done(double t) const override { return t > schedule_.lift_end; }
+  std::vector<ControllerAction> Actions() const override { return {{schedule_.lift_start, "lift"}}; }
+  std::vector<double> at_frames;  // (T, 2): x, z at each frame
+
+ private:
+  RailSchedule schedule_;
+  ArmTargets last_;
+};
+
+TEST(RailRunTest, TheRecordHoldsOneSensorTheServoTargetsAtEachFrameAndTheControllersActions) {
+  const RailScenarioConfig c = Short();
+  const RailSceneIds ids(c, SceneOptions{});
+  const RailSchedule schedule(c.rail, c.rail.press_depth_mm * 1e-3);
+  TargetsRecordingController controller(schedule);
+  RunRecord rec;
+  RailRun(c, ids, 0, 5, &controller).Execute(rec, nullptr);
+  ASSERT_EQ(rec.sensors.size(), 1u);
+  EXPECT_EQ(rec.sensors[0].name, "tactip");
+  EXPECT_EQ(rec.sensors[0].n_pins, ids.scene.n_pins);
+  EXPECT_EQ(rec.sensors[0].text_attrs.at("skin_pattern"), c.skin.pattern);
+  EXPECT_EQ(rec.actions.actuators, (std::vector<std::string>{"servo_x", "servo_z"}));
+  ASSERT_EQ(rec.actions.controls.size(), 2 * rec.frames());
+  EXPECT_EQ(rec.actions.controls, controller.at_frames);
+  EXPECT_GT(rec.actions.controls[2 * (rec.frames() - 1) + 1], 0.0);  // lifted by the end
+  ASSERT_EQ(rec.actions.list.size(), 1u);
+  EXPECT_EQ(rec.actions.list[0].what, "lift");
+  EXPECT_EQ(rec.actions.list[0].time_s, schedule.lift_start);
+}
+
 TEST(RailRunTest, SteppingByHandRecordsWhatExecuteRecords) {
   const RailScenarioConfig c = Short();
   const RailSceneIds ids(c, SceneOptions{});
@@ -50,8 +93,9 @@ TEST(RailRunTest, SteppingByHandRecordsWhatExecuteRecords) {
   const RailRunSummary sb = b.Finish(stepped);
   EXPECT_EQ(steps, sa.steps);
   EXPECT_EQ(stepped.time, whole.time);
-  EXPECT_EQ(stepped.pos_px, whole.pos_px);
-  EXPECT_EQ(stepped.pin_slip, whole.pin_slip);
+  EXPECT_EQ(stepped.sensors[0].pos_px, whole.sensors[0].pos_px);
+  EXPECT_EQ(stepped.sensors[0].pin_slip, whole.sensors[0].pin_slip);
+  EXPECT_EQ(stepped.actions.controls, whole.actions.controls);
   EXPECT_EQ(sb.gross_slip_onset_s, sa.gross_slip_onset_s);
   EXPECT_FALSE(std::isnan(sa.gross_slip_onset_s));  // the object does slip at 5 mm/s
 }

@@ -36,10 +36,10 @@ TEST_F(RailSceneOptionsTest, PuttingThePartsBackChangesNothingARunRecords) {
   EXPECT_EQ(sa.steps, sb.steps);
   EXPECT_EQ(sa.gross_slip_onset_s, sb.gross_slip_onset_s);
   EXPECT_EQ(sa.creep_um, sb.creep_um);
-  EXPECT_EQ(a.pos_px, b.pos_px);
-  EXPECT_EQ(a.normal_N, b.normal_N);
-  EXPECT_EQ(a.tangential_N, b.tangential_N);
-  EXPECT_EQ(a.pin_slip, b.pin_slip);
+  EXPECT_EQ(a.sensors[0].pos_px, b.sensors[0].pos_px);
+  EXPECT_EQ(a.sensors[0].normal_N, b.sensors[0].normal_N);
+  EXPECT_EQ(a.sensors[0].tangential_N, b.sensors[0].tangential_N);
+  EXPECT_EQ(a.sensors[0].pin_slip, b.sensors[0].pin_slip);
   EXPECT_EQ(a.object_height_m, b.object_height_m);
 }
 
@@ -53,7 +53,7 @@ TEST_F(RailSceneOptionsTest, AFreeObjectIsPressedAndLeftBehindInTheLift) {
   EXPECT_FALSE(s.held);
   EXPECT_FALSE(std::isnan(s.object_fall_s)) << "left behind during the lift";
   float total_N = 0.0f;
-  for (float n : rec.normal_N) total_N += n;
+  for (float n : rec.sensors[0].normal_N) total_N += n;
   EXPECT_GT(total_N, 0.0f) << "the skin touched the object";
 }
 

@@ -59,10 +59,16 @@ class RailViewSourceTest : public testing::MujocoWarningGuard {
     ASSERT_GT(generated.frames(), 100u);
     EXPECT_EQ(view.record().index, index);
     EXPECT_EQ(view.record().time, generated.time);
-    EXPECT_EQ(view.record().pos_px, generated.pos_px);
-    EXPECT_EQ(view.record().pin_contact, generated.pin_contact);
-    EXPECT_EQ(view.record().pin_slip, generated.pin_slip);
-    EXPECT_EQ(view.record().normal_N, generated.normal_N);
+    ASSERT_EQ(view.record().sensors.size(), generated.sensors.size());
+    for (size_t k = 0; k < generated.sensors.size(); ++k) {
+      const SensorRecord& shown = view.record().sensors[k];
+      const SensorRecord& kept = generated.sensors[k];
+      EXPECT_EQ(shown.name, kept.name);
+      EXPECT_EQ(shown.pos_px, kept.pos_px);
+      EXPECT_EQ(shown.pin_contact, kept.pin_contact);
+      EXPECT_EQ(shown.pin_slip, kept.pin_slip);
+      EXPECT_EQ(shown.normal_N, kept.normal_N);
+    }
     EXPECT_EQ(view.record().attrs.at("gross_slip_onset_s"), s.gross_slip_onset_s);
   }
 };

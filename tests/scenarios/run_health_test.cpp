@@ -112,10 +112,11 @@ TEST_P(SceneHealthTest, HeldObjectNeitherChattersNorCreepsNorSlipsBeforeTheOnset
   EXPECT_LT(s.health.pin_speed_px, kQuasiStaticSpeedPx);
   EXPECT_LT(s.creep_um, kCreepLimitUm);
   // No pin slips while the object is held, before the frame of the onset.
-  const size_t N = static_cast<size_t>(rec.n_pins);
+  const size_t N = static_cast<size_t>(rec.sensors[0].n_pins);
   for (size_t f = 0; f < rec.frames(); ++f) {
     if (rec.time[f] < s.retract_start_s - 0.5 || rec.time[f] >= s.gross_slip_onset_s - 1e-9) continue;
-    for (size_t i = 0; i < N; ++i) ASSERT_EQ(rec.pin_slip[f * N + i], 0) << "pin " << i << " at " << rec.time[f] << " s";
+    for (size_t i = 0; i < N; ++i)
+      ASSERT_EQ(rec.sensors[0].pin_slip[f * N + i], 0) << "pin " << i << " at " << rec.time[f] << " s";
   }
   // Coulomb: the onset within a frame of sum(mu N) + normal push + rail friction = m g.
   EXPECT_NEAR(s.gross_slip_onset_s, s.predicted_onset_s, 0.01);

@@ -99,10 +99,10 @@ TEST_F(ShardCliTest, ShardRunsAreTheSameRunsOfTheWholeJob) {
   for (const int k : {2, 3}) {
     const RunRecord a = one.ReadRun(k), b = part.ReadRun(k);
     EXPECT_EQ(a.time, b.time) << k;
-    EXPECT_EQ(a.pos_px, b.pos_px) << k;
-    EXPECT_EQ(a.valid, b.valid) << k;
-    EXPECT_EQ(a.pin_slip, b.pin_slip) << k;
-    EXPECT_EQ(a.normal_N, b.normal_N) << k;
+    EXPECT_EQ(a.sensors[0].pos_px, b.sensors[0].pos_px) << k;
+    EXPECT_EQ(a.sensors[0].valid, b.sensors[0].valid) << k;
+    EXPECT_EQ(a.sensors[0].pin_slip, b.sensors[0].pin_slip) << k;
+    EXPECT_EQ(a.sensors[0].normal_N, b.sensors[0].normal_N) << k;
     EXPECT_EQ(a.object_height_m, b.object_height_m) << k;
     EXPECT_EQ(a.text_attrs, b.text_attrs) << k;
     EXPECT_EQ(a.attrs.size(), b.attrs.size()) << k;
@@ -152,17 +152,18 @@ TEST(GenerateShardTest, ShardOfAnotherRunCountIsRefused) {
 RunRecord TinyRun(int index) {
   RunRecord r;
   r.index = index;
-  r.n_pins = 2;
+  SensorRecord& s = r.sensors.emplace_back();
+  s.n_pins = 2;
   r.time = {0.0, 0.01};
-  r.pos_px.assign(8, 1.5f);
-  r.valid.assign(4, 1);
-  r.pos_m.assign(12, 0.01f);
-  r.gross_slip = {0, 1};
-  r.pin_slip.assign(4, 0);
-  r.pin_contact.assign(4, 1);
-  r.incipient = {0, 0};
-  r.normal_N.assign(4, 0.5f);
-  r.tangential_N.assign(8, 0.1f);
+  s.pos_px.assign(8, 1.5f);
+  s.valid.assign(4, 1);
+  s.pos_m.assign(12, 0.01f);
+  s.gross_slip = {0, 1};
+  s.pin_slip.assign(4, 0);
+  s.pin_contact.assign(4, 1);
+  s.incipient = {0, 0};
+  s.normal_N.assign(4, 0.5f);
+  s.tangential_N.assign(8, 0.1f);
   r.object_height_m = {0.05, 0.049};
   r.attrs["gross_slip_onset_s"] = 0.01;
   r.text_attrs["stimulus"] = "flat";
@@ -214,6 +215,46 @@ TEST_F(ShardCliTest, SyntheticShardsMergeToTheFileWrittenInOneGo) {
   EXPECT_TRUE(Slurp(P("mixed.h5")) == Slurp(P("one.h5")));
 }
 
+TEST_F(ShardCliTest, SyntheticShardsOfTwoSensorsWithActionsMergeToTheFileWrittenInOneGo) {
+  // Each run: a second sensor of three pins after the first, and a controller's record.
+  const auto two_sensor_run = [](int k) {
+    RunRecord r = TinyRun(k);
+    SensorRecord s = r.sensors[0];
+    s.name = "left";
+    s.n_pins = 3;
+    s.pos_px.assign(12, 2.5f + static_cast<float>(k));
+    s.valid.assign(6, 1);
+    s.pos_m.assign(18, 0.02f);
+    s.pin_slip.assign(6, 1);
+    s.pin_contact.assign(6, 1);
+    s.normal_N.assign(6, 0.25f);
+    s.tangential_N.assign(12, 0.05f);
+    s.text_attrs["skin_pattern"] = "fingerprint-v2";
+    r.sensors.push_back(s);
+    r.actions.actuators = {"servo_x", "servo_z"};
+    r.actions.controls = {0.001, 0.0, 0.002, 0.001 * k};
+    r.actions.list = {{0.005 * k, "catch"}};
+    return r;
+  };
+  const auto write = [&](const std::string& path, const DatasetHeader& header, int first, int end) {
+    DatasetWriter w(path, header);
+    for (int k = first; k < end; ++k) w.WriteRun(two_sensor_run(k));
+    w.Commit();
+  };
+  write(P("one.h5"), JobHeader(std::nullopt), 0, 4);
+  write(P("a.h5"), JobHeader(ShardSpec{0, 2, 4}), 0, 2);
+  write(P("b.h5"), JobHeader(ShardSpec{1, 2, 4}), 2, 4);
+  const CliResult r = Run("merge " + P("b.h5") + " " + P("a.h5") + " --out " + P("all.h5"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(Slurp(P("all.h5")) == Slurp(P("one.h5")));
+  const RunRecord back = DatasetReader(P("all.h5")).ReadRun(3);
+  ASSERT_EQ(back.sensors.size(), 2u);
+  EXPECT_EQ(back.sensors[1].name, "left");
+  EXPECT_EQ(back.sensors[1].pos_px, two_sensor_run(3).sensors[1].pos_px);
+  ASSERT_EQ(back.actions.list.size(), 1u);
+  EXPECT_EQ(back.actions.list[0].what, "catch");
+}
+
 TEST_F(ShardCliTest, MergeRefusesWithOneLineNamingTheFileAndLeavesTheOutputUntouched) {
   // Job: 4 runs in 2 shards (a, b) or 3 (t0..t2); other jobs, copies and broken files.
   WriteJobShard(P("a.h5"), 0, 2);
@@ -227,6 +268,14 @@ TEST_F(ShardCliTest, MergeRefusesWithOneLineNamingTheFileAndLeavesTheOutputUntou
   WriteJobShard(P("config.h5"), 1, 2, [](DatasetHeader& h) { h.config_yaml += "  lift_mm: 5\n"; });
   WriteJobShard(P("version.h5"), 1, 2, [](DatasetHeader& h) { h.tactip_version = "0.0.9"; });
   WriteShard(P("total.h5"), JobHeader(ShardSpec{1, 2, 6}), 3, 6);
+  WriteJobShard(P("layout.h5"), 1, 2);
+  {
+    // A shard without the root attribute layout_version: layout 1.
+    const hid_t f = H5Fopen(P("layout.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    ASSERT_GE(H5Adelete(f, "layout_version"), 0);
+    H5Fclose(f);
+  }
   WriteShard(P("holes.h5"), JobHeader(ShardSpec{1, 2, 4}), 2, 3);
   std::ofstream(P("text.h5")) << "not hdf5\n";
   const std::string good = Slurp(P("a.h5"));
@@ -257,6 +306,9 @@ TEST_F(ShardCliTest, MergeRefusesWithOneLineNamingTheFileAndLeavesTheOutputUntou
       {P("a.h5") + " " + P("version.h5"),
        "merge: '" + P("version.h5") + "' is from a different job than '" + P("a.h5") +
            "': it has tactip version '0.0.9', not '0.1.0'"},
+      {P("a.h5") + " " + P("layout.h5"),
+       "merge: '" + P("layout.h5") + "' is from a different job than '" + P("a.h5") +
+           "': it has layout_version 1, not 2"},
       {P("a.h5") + " " + P("total.h5"),
        "merge: '" + P("total.h5") + "' is from a different job than '" + P("a.h5") + "': it has runs_total 6, not 4"},
       {P("a.h5") + " " + P("b.h5") + " " + P("a_copy.h5"),
@@ -301,13 +353,13 @@ TEST_F(ShardCliTest, ShardBrokenMidwayLeavesNoOutputAndNoTemporaryFile) {
   {
     const hid_t file = H5Fopen(P("b.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     ASSERT_GE(file, 0);
-    ASSERT_GE(H5Ldelete(file, "/runs/run_0003/pins/pos_px", H5P_DEFAULT), 0);
+    ASSERT_GE(H5Ldelete(file, "/runs/run_0003/sensors/tactip/pins/pos_px", H5P_DEFAULT), 0);
     H5Fclose(file);
   }
   std::ofstream(P("out.h5")) << "previous contents";
   const CliResult r = Run("merge " + P("a.h5") + " " + P("b.h5") + " --out " + P("out.h5") + " --quiet");
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.err, "tactip: dataset '" + P("b.h5") + "': run_0003 has no array pins/pos_px\n");
+  EXPECT_EQ(r.err, "tactip: dataset '" + P("b.h5") + "': run_0003 has no array sensors/tactip/pins/pos_px\n");
   EXPECT_EQ(Slurp(P("out.h5")), "previous contents");
   EXPECT_EQ(Files(), (std::vector<std::string>{"a.h5", "b.h5", "out.h5"}));
 }

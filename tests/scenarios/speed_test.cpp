@@ -42,10 +42,10 @@ TEST_F(SpeedStudyTest, TimingARunChangesNeitherItsPhysicsNorItsRecord) {
   const RailRunSummary b = scenario.RunInstrumented(0, 5, timed, inst);
   EXPECT_EQ(a.steps, b.steps);
   EXPECT_EQ(a.gross_slip_onset_s, b.gross_slip_onset_s);
-  ASSERT_EQ(plain.pos_px.size(), timed.pos_px.size());
-  EXPECT_EQ(plain.pos_px, timed.pos_px);
-  EXPECT_EQ(plain.normal_N, timed.normal_N);
-  EXPECT_EQ(plain.pin_slip, timed.pin_slip);
+  ASSERT_EQ(plain.sensors[0].pos_px.size(), timed.sensors[0].pos_px.size());
+  EXPECT_EQ(plain.sensors[0].pos_px, timed.sensors[0].pos_px);
+  EXPECT_EQ(plain.sensors[0].normal_N, timed.sensors[0].normal_N);
+  EXPECT_EQ(plain.sensors[0].pin_slip, timed.sensors[0].pin_slip);
   // Every step was timed and its controls kept for the bare replay.
   EXPECT_EQ(inst.profile.steps, b.steps);
   EXPECT_EQ(inst.ctrl.size(), static_cast<size_t>(2 * b.steps));

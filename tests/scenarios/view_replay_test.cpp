@@ -82,7 +82,8 @@ TEST_F(ReplayViewSourceTest, AStoredPositionThatDiffersIsReportedFromItsFrameOn)
   // One coordinate of one pin in frame 300 moved by a quarter pixel.
   RunRecord run = StoredRun1();
   constexpr size_t kFrame = 300, kPin = 5;
-  float& x = run.pos_px[(kFrame * static_cast<size_t>(run.n_pins) + kPin) * 2];
+  SensorRecord& sensor = run.sensors.front();
+  float& x = sensor.pos_px[(kFrame * static_cast<size_t>(sensor.n_pins) + kPin) * 2];
   const float original = x;
   x += 0.25f;
   ReplayViewSource replay(WriteDataset("moved.h5", run), 1);
@@ -99,9 +100,10 @@ TEST_F(ReplayViewSourceTest, AStoredPositionThatDiffersIsReportedFromItsFrameOn)
 TEST_F(ReplayViewSourceTest, PinsShowTheStoredLabelsOfTheNearestFrame) {
   // Frame 10 (t = 0.1 s, long before the press reaches the object) stored as every pin slipping.
   RunRecord run = StoredRun1();
-  const size_t n = static_cast<size_t>(run.n_pins);
-  std::fill_n(run.pin_contact.begin() + 10 * n, n, 1);
-  std::fill_n(run.pin_slip.begin() + 10 * n, n, 1);
+  SensorRecord& sensor = run.sensors.front();
+  const size_t n = static_cast<size_t>(sensor.n_pins);
+  std::fill_n(sensor.pin_contact.begin() + 10 * n, n, 1);
+  std::fill_n(sensor.pin_slip.begin() + 10 * n, n, 1);
   ReplayViewSource replay(WriteDataset("labels.h5", run), 1);
   auto count = [&](const Rgba& colour) {
     int k = 0;

@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 RunRecord NoisyRun(int index, int t, int n) {
   RunRecord r;
   r.index = index;
-  r.n_pins = n;
+  SensorRecord& s = r.sensors.emplace_back();
+  s.n_pins = n;
   std::uint32_t state = 12345u + static_cast<std::uint32_t>(index);
   const auto next = [&state] {
     state = state * 1664525u + 1013904223u;
@@ -40,15 +41,15 @@ RunRecord NoisyRun(int index, int t, int n) {
   const size_t tn = static_cast<size_t>(t) * static_cast<size_t>(n);
   for (int i = 0; i < t; ++i) r.time.push_back(0.01 * i);
   r.object_height_m.assign(static_cast<size_t>(t), 0.1);
-  r.gross_slip.assign(static_cast<size_t>(t), 0);
-  r.incipient.assign(static_cast<size_t>(t), 0);
-  fill(r.pos_px, tn * 2);
-  fill(r.pos_m, tn * 3);
-  fill(r.normal_N, tn);
-  fill(r.tangential_N, tn * 2);
-  r.valid.assign(tn, 1);
-  r.pin_slip.assign(tn, 0);
-  r.pin_contact.assign(tn, 1);
+  s.gross_slip.assign(static_cast<size_t>(t), 0);
+  s.incipient.assign(static_cast<size_t>(t), 0);
+  fill(s.pos_px, tn * 2);
+  fill(s.pos_m, tn * 3);
+  fill(s.normal_N, tn);
+  fill(s.tangential_N, tn * 2);
+  s.valid.assign(tn, 1);
+  s.pin_slip.assign(tn, 0);
+  s.pin_contact.assign(tn, 1);
   r.attrs["friction_coefficient"] = 0.5;
   return r;
 }
@@ -113,7 +114,7 @@ TEST_F(DatasetDiskFullTest, RunningOutOfSpaceAnywhereFailsCleanly) {
     if (stage == kDone) {
       // It fitted: the file is complete.
       EXPECT_EQ(entries, (std::vector<std::string>{"filler", "x.h5"}));
-      EXPECT_EQ(DatasetReader(path).ReadRun(1).pos_px, runs[1].pos_px);
+      EXPECT_EQ(DatasetReader(path).ReadRun(1).sensors.at(0).pos_px, runs[1].sensors[0].pos_px);
     } else {
       // One line naming the dataset and the reason; nothing left but the filler.
       EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;

@@ -46,23 +46,27 @@ DatasetHeader Header() {
 RunRecord FiniteRun(int index, int t, int n) {
   RunRecord r;
   r.index = index;
-  r.n_pins = n;
+  SensorRecord& s = r.sensors.emplace_back();
+  s.n_pins = n;
   const auto tn = static_cast<size_t>(t) * static_cast<size_t>(n);
   for (int i = 0; i < t; ++i) {
     r.time.push_back(0.01 * i);
-    r.gross_slip.push_back(0);
-    r.incipient.push_back(0);
+    s.gross_slip.push_back(0);
+    s.incipient.push_back(0);
     r.object_height_m.push_back(0.1);
   }
-  r.pos_px.assign(2 * tn, 320.0f);
-  r.external_px.assign(2 * tn, 240.0f);
-  r.pos_m.assign(3 * tn, 0.01f);
-  r.external_m.assign(3 * tn, 0.02f);
-  r.tangential_N.assign(2 * tn, 0.0f);
-  r.normal_N.assign(tn, 0.1f);
-  r.valid.assign(tn, 1);
-  r.pin_slip.assign(tn, 0);
-  r.pin_contact.assign(tn, 1);
+  s.pos_px.assign(2 * tn, 320.0f);
+  s.external_px.assign(2 * tn, 240.0f);
+  s.pos_m.assign(3 * tn, 0.01f);
+  s.external_m.assign(3 * tn, 0.02f);
+  s.tangential_N.assign(2 * tn, 0.0f);
+  s.normal_N.assign(tn, 0.1f);
+  s.valid.assign(tn, 1);
+  s.pin_slip.assign(tn, 0);
+  s.pin_contact.assign(tn, 1);
+  r.actions.actuators = {"servo_x", "servo_z"};
+  r.actions.controls.assign(2 * static_cast<size_t>(t), 0.001);
+  r.actions.list = {{0.02, "stop"}};
   r.attrs["object_fall_s"] = std::numeric_limits<double>::quiet_NaN();  // "did not happen": kept
   return r;
 }
@@ -75,14 +79,21 @@ TEST_F(DatasetFiniteTest, ANonFiniteArrayValueIsRefusedNamingArrayFrameAndPinAnd
     void (*spoil)(RunRecord&, float, float);
     std::string message;
   } cases[] = {
-      {"pos_px", [](RunRecord& r, float i, float) { r.pos_px[2 * (2 * 3 + 1) + 1] = i; },
-       "/runs/run_0007/pins/pos_px would hold a non-finite value (frame 2, pin 1); the run is not written"},
-      {"external_px", [](RunRecord& r, float i, float) { r.external_px[0] = -i; },
-       "/runs/run_0007/external/pos_px would hold a non-finite value (frame 0, pin 0); the run is not written"},
-      {"normal_N", [](RunRecord& r, float, float n) { r.normal_N[3 * 3 + 2] = n; },
-       "/runs/run_0007/contact/normal_N would hold a non-finite value (frame 3, pin 2); the run is not written"},
+      {"pos_px", [](RunRecord& r, float i, float) { r.sensors[0].pos_px[2 * (2 * 3 + 1) + 1] = i; },
+       "/runs/run_0007/sensors/tactip/pins/pos_px would hold a non-finite value (frame 2, pin 1); the run is not "
+       "written"},
+      {"external_px", [](RunRecord& r, float i, float) { r.sensors[0].external_px[0] = -i; },
+       "/runs/run_0007/sensors/tactip/external/pos_px would hold a non-finite value (frame 0, pin 0); the run is not "
+       "written"},
+      {"normal_N", [](RunRecord& r, float, float n) { r.sensors[0].normal_N[3 * 3 + 2] = n; },
+       "/runs/run_0007/sensors/tactip/contact/normal_N would hold a non-finite value (frame 3, pin 2); the run is not "
+       "written"},
       {"height", [](RunRecord& r, float i, float) { r.object_height_m[4] = i; },
        "/runs/run_0007/object/height_m would hold a non-finite value (frame 4); the run is not written"},
+      {"controls", [](RunRecord& r, float, float n) { r.actions.controls[2 * 3 + 1] = n; },
+       "/runs/run_0007/actions/controls would hold a non-finite value (frame 3); the run is not written"},
+      {"action time", [](RunRecord& r, float i, float) { r.actions.list[0].time_s = i; },
+       "/runs/run_0007/actions/time would hold a non-finite value (action 0); the run is not written"},
   };
   for (const Case& c : cases) {
     const std::string path = Path("x.h5");

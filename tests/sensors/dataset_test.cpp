@@ -19,6 +19,7 @@
 
 #include "sim/config.h"
 #include "input_error.h"
+#include "run_records.h"
 
 namespace tactip {
 namespace {
@@ -60,35 +61,6 @@ DatasetHeader MakeHeader(std::uint64_t seed = 0xFEDCBA9876543210ULL) {
   return h;
 }
 
-/// Synthetic run with T frames and N pins; every element distinct where possible.
-RunRecord MakeRun(int index, int t, int n) {
-  RunRecord r;
-  r.index = index;
-  r.n_pins = n;
-  const auto tn = static_cast<size_t>(t * n);
-  for (int i = 0; i < t; ++i) {
-    r.time.push_back(0.01 * i + index);
-    r.gross_slip.push_back(static_cast<std::uint8_t>(i % 2));
-    r.incipient.push_back(static_cast<std::uint8_t>(i % 3 == 1));
-    r.object_height_m.push_back(0.1 - 1e-4 * i);
-  }
-  for (size_t k = 0; k < tn * 2; ++k) r.pos_px.push_back(100.25f + 0.5f * static_cast<float>(k));
-  for (size_t k = 0; k < tn * 3; ++k) r.pos_m.push_back(1e-3f * static_cast<float>(k) - 0.004f);
-  for (size_t k = 0; k < tn * 2; ++k) r.tangential_N.push_back(-0.01f * static_cast<float>(k));
-  for (size_t k = 0; k < tn; ++k) {
-    r.valid.push_back(k % 5 == 0 ? 0 : 1);
-    r.pin_slip.push_back(k % 3 == 0 ? 1 : 0);
-    r.pin_contact.push_back(k % 2 == 0 ? 1 : 0);
-    r.normal_N.push_back(0.02f * static_cast<float>(k));
-  }
-  r.attrs["friction_coefficient"] = 0.6;
-  r.attrs["gross_slip_onset_s"] = 0.123456789;
-  r.attrs["object_fall_s"] = std::numeric_limits<double>::quiet_NaN();
-  r.text_attrs["stimulus"] = "flat";
-  r.text_attrs["comment"] = "";
-  return r;
-}
-
 /// Writes `runs` to `path` and commits.
 void WriteDataset(const std::string& path, const std::vector<RunRecord>& runs, const DatasetHeader& header) {
   DatasetWriter w(path, header);
@@ -119,36 +91,68 @@ TEST_F(DatasetTest, RoundTripPreservesEveryArrayAndAttribute) {
   EXPECT_EQ(reader.header().scenario, "rail");
   EXPECT_EQ(reader.header().seed, 0xFEDCBA9876543210ULL);
   EXPECT_EQ(reader.header().config_yaml, MakeHeader().config_yaml);
+  EXPECT_EQ(reader.header().layout_version, 2);
   EXPECT_EQ(reader.run_indices(), (std::vector<int>{1, 3}));
 
   const RunRecord r = reader.ReadRun(3);
   EXPECT_NO_THROW(r.CheckShapes());
-  EXPECT_EQ(r.index, 3);
-  EXPECT_EQ(r.n_pins, 3);
   EXPECT_EQ(r.frames(), 5u);
-  EXPECT_EQ(r.time, a.time);
-  EXPECT_EQ(r.pos_px, a.pos_px);
-  EXPECT_EQ(r.valid, a.valid);
-  EXPECT_EQ(r.pos_m, a.pos_m);
-  EXPECT_EQ(r.gross_slip, a.gross_slip);
-  EXPECT_EQ(r.pin_slip, a.pin_slip);
-  EXPECT_EQ(r.pin_contact, a.pin_contact);
-  EXPECT_EQ(r.incipient, a.incipient);
-  EXPECT_TRUE(r.external_px.empty());
-  EXPECT_EQ(r.normal_N, a.normal_N);
-  EXPECT_EQ(r.tangential_N, a.tangential_N);
-  EXPECT_EQ(r.object_height_m, a.object_height_m);
-  ASSERT_EQ(r.attrs.size(), 3u);
+  ASSERT_EQ(r.sensors.size(), 1u);
+  EXPECT_EQ(r.sensors[0].name, "tactip");
+  EXPECT_EQ(r.sensors[0].n_pins, 3);
+  EXPECT_TRUE(r.sensors[0].external_px.empty());
+  EXPECT_EQ(r.sensors[0].text_attrs.at("skin_pattern"), "smooth");
+  ASSERT_EQ(r.attrs.size(), 3u);  // the event times among them
   EXPECT_EQ(r.attrs.at("friction_coefficient"), 0.6);
   EXPECT_EQ(r.attrs.at("gross_slip_onset_s"), 0.123456789);
   EXPECT_TRUE(std::isnan(r.attrs.at("object_fall_s")));
-  EXPECT_EQ(r.text_attrs, a.text_attrs);
+  ASSERT_EQ(r.actions.list.size(), 2u);
+  EXPECT_EQ(r.actions.list[1].what, "stop ✓");
+  ExpectSameRun(r, a);
 
   // A single-pin run round-trips too.
-  const RunRecord one = reader.ReadRun(1);
-  EXPECT_EQ(one.n_pins, 1);
-  EXPECT_EQ(one.pos_m, b.pos_m);
-  EXPECT_EQ(one.tangential_N, b.tangential_N);
+  ExpectSameRun(reader.ReadRun(1), b);
+}
+
+TEST_F(DatasetTest, TwoSensorsOfDifferentPinCountsRoundTripInTheirOrder) {
+  const std::string path = Path("x.h5");
+  RunRecord run = MakeRun(4, 6, 3);
+  // A second sensor, named to sort before the first, with more pins and an external camera.
+  run.sensors.push_back(MakeSensor("left", 6, 5, 7.0f, /*external=*/true));
+  run.sensors[1].attrs["pixel_noise_px"] = 0.25;
+  run.sensors[1].text_attrs["skin_pattern"] = "fingerprint-v2";
+  WriteDataset(path, {run}, MakeHeader());
+
+  const DatasetReader reader(path);
+  const RunRecord back = reader.ReadRun(4);
+  ASSERT_EQ(back.sensors.size(), 2u);
+  EXPECT_EQ(back.sensors[0].name, "tactip");
+  EXPECT_EQ(back.sensors[1].name, "left");
+  EXPECT_EQ(back.sensors[1].n_pins, 5);
+  EXPECT_EQ(back.sensors[1].external_m.size(), 6u * 5u * 3u);
+  ExpectSameRun(back, run);
+
+  // The summary names both sensors with their pin counts and attributes, and no arrays.
+  const RunRecord summary = reader.ReadRunSummary(4);
+  ASSERT_EQ(summary.sensors.size(), 2u);
+  EXPECT_EQ(summary.sensors[0].n_pins, 3);
+  EXPECT_EQ(summary.sensors[1].n_pins, 5);
+  EXPECT_EQ(summary.sensors[1].attrs.at("pixel_noise_px"), 0.25);
+  EXPECT_EQ(summary.sensors[1].text_attrs.at("skin_pattern"), "fingerprint-v2");
+  EXPECT_TRUE(summary.sensors[1].pos_px.empty());
+  EXPECT_TRUE(summary.actions.controls.empty());
+}
+
+TEST_F(DatasetTest, ARunWithoutActionsHasNoActionsGroupAndReadsBackEmpty) {
+  const std::string path = Path("x.h5");
+  RunRecord run = MakeRun(0, 4, 2);
+  run.actions = {};
+  WriteDataset(path, {run}, MakeHeader());
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(H5Lexists(f, "/runs/run_0000/actions", H5P_DEFAULT), 0);
+  H5Fclose(f);
+  ExpectSameRun(DatasetReader(path).ReadRun(0), run);
 }
 
 TEST_F(DatasetTest, SummaryReadsAttributesAndFrameCountOnly) {
@@ -156,11 +160,14 @@ TEST_F(DatasetTest, SummaryReadsAttributesAndFrameCountOnly) {
   WriteDataset(path, {MakeRun(0, 5, 3)}, MakeHeader());
   const RunRecord s = DatasetReader(path).ReadRunSummary(0);
   EXPECT_EQ(s.frames(), 5u);
-  EXPECT_EQ(s.n_pins, 3);
+  ASSERT_EQ(s.sensors.size(), 1u);
+  EXPECT_EQ(s.sensors[0].n_pins, 3);
   EXPECT_EQ(s.attrs.at("friction_coefficient"), 0.6);
+  EXPECT_EQ(s.attrs.at("gross_slip_onset_s"), 0.123456789);  // from events/
   EXPECT_EQ(s.text_attrs.at("stimulus"), "flat");
-  EXPECT_TRUE(s.pos_px.empty());
-  EXPECT_TRUE(s.normal_N.empty());
+  EXPECT_TRUE(s.sensors[0].pos_px.empty());
+  EXPECT_TRUE(s.sensors[0].normal_N.empty());
+  EXPECT_TRUE(s.object_height_m.empty());
 }
 
 TEST_F(DatasetTest, FileFollowsTheDocumentedSchema) {
@@ -177,15 +184,18 @@ TEST_F(DatasetTest, FileFollowsTheDocumentedSchema) {
   };
   const std::vector<Expect> expected = {
       {"/runs/run_0002/time", H5T_IEEE_F64LE, {5}, "s"},
-      {"/runs/run_0002/pins/pos_px", H5T_IEEE_F32LE, {5, 3, 2}, "px"},
-      {"/runs/run_0002/pins/valid", H5T_STD_U8LE, {5, 3}, "1"},
-      {"/runs/run_0002/pins/pos_m", H5T_IEEE_F32LE, {5, 3, 3}, "m"},
-      {"/runs/run_0002/labels/gross_slip", H5T_STD_U8LE, {5}, "1"},
-      {"/runs/run_0002/labels/pin_slip", H5T_STD_U8LE, {5, 3}, "1"},
-      {"/runs/run_0002/labels/pin_contact", H5T_STD_U8LE, {5, 3}, "1"},
-      {"/runs/run_0002/contact/normal_N", H5T_IEEE_F32LE, {5, 3}, "N"},
-      {"/runs/run_0002/contact/tangential_N", H5T_IEEE_F32LE, {5, 3, 2}, "N"},
+      {"/runs/run_0002/sensors/tactip/pins/pos_px", H5T_IEEE_F32LE, {5, 3, 2}, "px"},
+      {"/runs/run_0002/sensors/tactip/pins/valid", H5T_STD_U8LE, {5, 3}, "1"},
+      {"/runs/run_0002/sensors/tactip/pins/pos_m", H5T_IEEE_F32LE, {5, 3, 3}, "m"},
+      {"/runs/run_0002/sensors/tactip/labels/gross_slip", H5T_STD_U8LE, {5}, "1"},
+      {"/runs/run_0002/sensors/tactip/labels/pin_slip", H5T_STD_U8LE, {5, 3}, "1"},
+      {"/runs/run_0002/sensors/tactip/labels/pin_contact", H5T_STD_U8LE, {5, 3}, "1"},
+      {"/runs/run_0002/sensors/tactip/labels/incipient", H5T_STD_U8LE, {5}, "1"},
+      {"/runs/run_0002/sensors/tactip/contact/normal_N", H5T_IEEE_F32LE, {5, 3}, "N"},
+      {"/runs/run_0002/sensors/tactip/contact/tangential_N", H5T_IEEE_F32LE, {5, 3, 2}, "N"},
       {"/runs/run_0002/object/height_m", H5T_IEEE_F64LE, {5}, "m"},
+      {"/runs/run_0002/actions/controls", H5T_IEEE_F64LE, {5, 2}, "ctrl"},
+      {"/runs/run_0002/actions/time", H5T_IEEE_F64LE, {2}, "s"},
   };
   for (const auto& e : expected) {
     SCOPED_TRACE(e.path);
@@ -239,6 +249,36 @@ TEST_F(DatasetTest, FileFollowsTheDocumentedSchema) {
   EXPECT_GT(H5Tequal(mu_type, H5T_IEEE_F64LE), 0);
   H5Tclose(mu_type);
   H5Aclose(mu);
+  // Layout 2: the root says so; event times live in events/, not on the run; the sensor
+  // group carries its pin count and text attributes.
+  std::uint64_t layout = 0;
+  const hid_t lv = H5Aopen(file, "layout_version", H5P_DEFAULT);
+  ASSERT_GE(lv, 0);
+  EXPECT_GE(H5Aread(lv, H5T_NATIVE_UINT64, &layout), 0);
+  EXPECT_EQ(layout, 2u);
+  H5Aclose(lv);
+  EXPECT_GT(H5Aexists_by_name(file, "/runs/run_0002/events", "gross_slip_onset_s", H5P_DEFAULT), 0);
+  EXPECT_GT(H5Aexists_by_name(file, "/runs/run_0002/events", "object_fall_s", H5P_DEFAULT), 0);
+  EXPECT_EQ(H5Aexists_by_name(file, "/runs/run_0002", "gross_slip_onset_s", H5P_DEFAULT), 0);
+  EXPECT_EQ(H5Aexists_by_name(file, "/runs/run_0002/events", "friction_coefficient", H5P_DEFAULT), 0);
+  long long n_pins = 0;
+  const hid_t np = H5Aopen_by_name(file, "/runs/run_0002/sensors/tactip", "n_pins", H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(np, 0);
+  EXPECT_GE(H5Aread(np, H5T_NATIVE_LLONG, &n_pins), 0);
+  EXPECT_EQ(n_pins, 3);
+  H5Aclose(np);
+  EXPECT_GT(H5Aexists_by_name(file, "/runs/run_0002/sensors/tactip", "skin_pattern", H5P_DEFAULT), 0);
+  EXPECT_EQ(H5Aexists_by_name(file, "/runs/run_0002", "skin_pattern", H5P_DEFAULT), 0);
+  // The controls name their actuators; what the controller did is a list of strings.
+  const hid_t controls = H5Dopen2(file, "/runs/run_0002/actions/controls", H5P_DEFAULT);
+  EXPECT_GT(H5Aexists(controls, "actuators"), 0);
+  H5Dclose(controls);
+  const hid_t what = H5Dopen2(file, "/runs/run_0002/actions/what", H5P_DEFAULT);
+  ASSERT_GE(what, 0);
+  const hid_t what_type = H5Dget_type(what);
+  EXPECT_GT(H5Tis_variable_str(what_type), 0);
+  H5Tclose(what_type);
+  H5Dclose(what);
   H5Fclose(file);
 }
 
@@ -346,7 +386,7 @@ TEST_F(DatasetTest, ARunWithoutFramesIsRefused) {
     const hsize_t time_shape[1] = {0}, valid_shape[2] = {0, 3};
     for (const auto& [rel, rank, shape, type] :
          {std::tuple{"/runs/run_0002/time", 1, time_shape, H5T_IEEE_F64LE},
-          std::tuple{"/runs/run_0002/pins/valid", 2, valid_shape, H5T_STD_U8LE}}) {
+          std::tuple{"/runs/run_0002/sensors/tactip/pins/valid", 2, valid_shape, H5T_STD_U8LE}}) {
       ASSERT_GE(H5Ldelete(f, rel, H5P_DEFAULT), 0);
       const hid_t space = H5Screate_simple(rank, shape, nullptr);
       const hid_t d = H5Dcreate2(f, rel, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -366,12 +406,14 @@ TEST_F(DatasetTest, NonFinitePinPositionsAreRefusedByReadRun) {
   const float inf = std::numeric_limits<float>::infinity();
   RunRecord run = MakeRun(2, 4, 3);
   WriteDataset(path, {run}, MakeHeader());
-  run.pos_px[2 * (3 * 1 + 2) + 1] = inf;  // frame 1, pin 2, v
-  Overwrite(path, "/runs/run_0002/pins/pos_px", H5T_NATIVE_FLOAT, run.pos_px);
+  std::vector<float>& pos_px = run.sensors[0].pos_px;
+  pos_px[2 * (3 * 1 + 2) + 1] = inf;  // frame 1, pin 2, v
+  Overwrite(path, "/runs/run_0002/sensors/tactip/pins/pos_px", H5T_NATIVE_FLOAT, pos_px);
   const DatasetReader reader(path);
   EXPECT_NO_THROW(reader.ReadRunSummary(2));  // reads no positions
   EXPECT_EQ(InputErrorOf([&] { reader.ReadRun(2); }),
-            "dataset '" + path + "': run_0002/pins/pos_px is inf at frame 1, pin 2 (must be a finite number)");
+            "dataset '" + path +
+                "': run_0002/sensors/tactip/pins/pos_px is inf at frame 1, pin 2 (must be a finite number)");
 }
 
 TEST_F(DatasetTest, MissingFolderThrowsInputErrorAndLeavesNothing) {
@@ -416,39 +458,66 @@ TEST_F(DatasetTest, AMissingArrayNamesTheRunAndTheArray) {
   // Remove one array behind the reader's back.
   const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(f, 0);
-  ASSERT_GE(H5Ldelete(f, "/runs/run_0007/pins/pos_m", H5P_DEFAULT), 0);
+  ASSERT_GE(H5Ldelete(f, "/runs/run_0007/sensors/tactip/pins/pos_m", H5P_DEFAULT), 0);
   H5Fclose(f);
   const DatasetReader reader(path);
   EXPECT_NO_THROW(reader.ReadRunSummary(7));
   const std::string msg = InputErrorOf([&] { reader.ReadRun(7); });
   EXPECT_NE(msg.find(path), std::string::npos) << msg;
   EXPECT_NE(msg.find("run_0007"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("pins/pos_m"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("sensors/tactip/pins/pos_m"), std::string::npos) << msg;
   EXPECT_NE(InputErrorOf([&] { reader.ReadRun(8); }).find("has no run run_0008"), std::string::npos);
 }
 
 TEST(DatasetShapeTest, CheckShapesNamesTheWrongField) {
   RunRecord r = MakeRun(0, 5, 3);
   EXPECT_NO_THROW(r.CheckShapes());
-  r.tangential_N.pop_back();
+  r.sensors[0].tangential_N.pop_back();
   try {
     r.CheckShapes();
     FAIL() << "no exception";
   } catch (const std::logic_error& e) {
-    EXPECT_NE(std::string(e.what()).find("tangential_N"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("sensor 'tactip': tangential_N"), std::string::npos) << e.what();
   }
   RunRecord empty;
-  empty.n_pins = 3;
+  empty.sensors.emplace_back().n_pins = 3;
   EXPECT_THROW(empty.CheckShapes(), std::logic_error);  // T = 0
   RunRecord no_pins = MakeRun(0, 5, 3);
-  no_pins.n_pins = 0;
+  no_pins.sensors[0].n_pins = 0;
   EXPECT_THROW(no_pins.CheckShapes(), std::logic_error);
+}
+
+TEST(DatasetShapeTest, CheckShapesRefusesRunsWhoseSensorsOrControlsCannotBeWritten) {
+  const struct {
+    const char* what;
+    void (*spoil)(RunRecord&);
+    const char* message;
+  } cases[] = {
+      {"no sensor", [](RunRecord& r) { r.sensors.clear(); }, "has no sensor"},
+      {"same name", [](RunRecord& r) { r.sensors.push_back(r.sensors[0]); }, "two sensors are named 'tactip'"},
+      {"slash", [](RunRecord& r) { r.sensors[0].name = "a/b"; }, "sensor name 'a/b' cannot name a group"},
+      {"empty name", [](RunRecord& r) { r.sensors[0].name = ""; }, "sensor name '' cannot name a group"},
+      {"n_pins attribute", [](RunRecord& r) { r.sensors[0].attrs["n_pins"] = 3; }, "'n_pins' is not an attribute"},
+      {"controls", [](RunRecord& r) { r.actions.controls.pop_back(); }, "actions.controls has 9 values, expected 10"},
+      {"actuators", [](RunRecord& r) { r.actions.actuators[1] = "servo_x"; }, "actuator 'servo_x' is listed twice"},
+      {"attribute kinds", [](RunRecord& r) { r.text_attrs["friction_coefficient"] = "high"; }, "both numeric and text"},
+  };
+  for (const auto& c : cases) {
+    RunRecord r = MakeRun(0, 5, 3);
+    c.spoil(r);
+    try {
+      r.CheckShapes();
+      ADD_FAILURE() << c.what << ": no exception";
+    } catch (const std::logic_error& e) {
+      EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << c.what << ": " << e.what();
+    }
+  }
 }
 
 TEST_F(DatasetTest, WriteRunRejectsBadRecordsWithLogicError) {
   DatasetWriter w(Path("x.h5"), MakeHeader());
   RunRecord bad = MakeRun(0, 5, 3);
-  bad.valid.push_back(1);
+  bad.sensors[0].valid.push_back(1);
   EXPECT_THROW(w.WriteRun(bad), std::logic_error);
   w.WriteRun(MakeRun(0, 5, 3));  // the failed call wrote nothing
   EXPECT_THROW(w.WriteRun(MakeRun(0, 5, 3)), std::logic_error);  // same index twice

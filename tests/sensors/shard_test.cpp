@@ -92,13 +92,14 @@ class DatasetShardTest : public ::testing::Test {
     h.config_yaml = "rail: {}\n";
     h.shard = shard;
     RunRecord run;  // one frame, one pin
-    run.n_pins = 1;
+    SensorRecord& s = run.sensors.emplace_back();
+    s.n_pins = 1;
     run.time = {0.0};
-    run.pos_px = {1.0f, 2.0f};
-    run.valid = run.gross_slip = run.pin_slip = run.pin_contact = run.incipient = {0};
-    run.pos_m = {0.0f, 0.0f, 0.0f};
-    run.normal_N = {0.0f};
-    run.tangential_N = {0.0f, 0.0f};
+    s.pos_px = {1.0f, 2.0f};
+    s.valid = s.gross_slip = s.pin_slip = s.pin_contact = s.incipient = {0};
+    s.pos_m = {0.0f, 0.0f, 0.0f};
+    s.normal_N = {0.0f};
+    s.tangential_N = {0.0f, 0.0f};
     run.object_height_m = {0.0};
     DatasetWriter w(path, h);
     w.WriteRun(run);

@@ -57,7 +57,7 @@ TEST(TactileSensorTest, AtRestNothingTouchesAndTheNoiseFreeFrameIsTheProjection)
   sensor.Rest(sim);
   sensor.ReadContacts(sim);
   EXPECT_EQ(sensor.labels().n_contact, 0);
-  RunRecord rec;
+  SensorRecord rec;
   const PinFrame& frame = sensor.Capture(sim, 0.25, rec);
   ASSERT_EQ(frame.size(), rail.scene.n_pins);
   EXPECT_EQ(frame.time_s, 0.25);
@@ -89,7 +89,7 @@ TEST(TactileSensorTest, CameraNoiseMovesTheReportedButNotTheCleanPositions) {
   TactileSensor sensor(noisy, rail.ids, 1, 2);
   sensor.Rest(sim);
   sensor.ReadContacts(sim);
-  RunRecord rec;
+  SensorRecord rec;
   const PinFrame& frame = sensor.Capture(sim, 0.0, rec);
   double sum_sq = 0.0;
   for (int i = 0; i < frame.size(); ++i) {

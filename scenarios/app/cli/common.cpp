@@ -72,6 +72,26 @@ ConfigSource ConfigArgs::Source() const {
   return src;
 }
 
+CLI::Option* AddSensorOption(CLI::App* c, std::string& sensor) {
+  return c->add_option("--sensor", sensor,
+                       "Sensor of the dataset whose pins to read (default: its first; 'tactip info' lists them).")
+      ->check(NonEmpty("a sensor name (see 'tactip info')"));
+}
+
+namespace {
+
+/// "tactip: 331 pins, skin_pattern smooth; left: 127 pins": the sensors of `run`.
+std::string SensorsText(const RunRecord& run) {
+  std::string out;
+  for (const SensorRecord& s : run.sensors) {
+    out += fmt::format("{}{}: {} pins", out.empty() ? "" : "; ", s.name, s.n_pins);
+    for (const auto& [key, value] : s.text_attrs) out += fmt::format(", {} {}", key, value);
+  }
+  return out;
+}
+
+}  // namespace
+
 void PrintDatasetSummary(const std::string& path, bool with_config) {
   DatasetReader reader(path);
   const auto& h = reader.header();
@@ -86,6 +106,8 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
     std::printf("shard        %s: %s ('tactip merge' joins the shards)\n", h.shard->text().c_str(),
                 h.shard->runs_text().c_str());
   }
+  std::printf("sensors      %s%s\n", SensorsText(summaries.front()).c_str(),
+              h.layout_version < kDatasetLayoutVersion ? fmt::format(" (layout {})", h.layout_version).c_str() : "");
   std::printf("runs         %zu\n", runs.size());
   std::printf("%5s %7s %9s %10s %10s %10s %8s %9s %8s %9s %7s\n", "run", "frames", "length_s", "onset_s", "fall_s",
               "coulomb_s", "mu", "depth_mm", "v_mm_s", "creep_um", "health");

@@ -42,7 +42,12 @@ struct ConfigArgs {
 /// prints the chosen step and what binds it on stderr.
 ResolvedConfig ResolveAndReport(const ScenarioEntry& entry, const ConfigSource& src);
 
-/// Prints a dataset's header, one line per run, totals and (optionally) the stored config.
+/// Registers --sensor NAME on `c` into `sensor`: which sensor of a dataset to read pins from
+/// (empty: the dataset's first).
+CLI::Option* AddSensorOption(CLI::App* c, std::string& sensor);
+
+/// Prints a dataset's header, its sensors, one line per run, totals and (optionally) the
+/// stored config.
 void PrintDatasetSummary(const std::string& path, bool with_config);
 
 }  // namespace tactip::cli

@@ -16,6 +16,7 @@
 #include "detectors/response.h"
 #include "detectors/svm.h"
 #include "detectors/threshold.h"
+#include "scenarios/app/cli/common.h"
 #include "scenarios/app/cli/lean_command.h"
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
@@ -149,7 +150,7 @@ int RunSpeedStudy(const std::vector<std::string>& scenes, const std::vector<std:
 
 // Options of the detector subcommands (owned by the returned closure).
 struct DetectArgs {
-  std::string kind, kernel = "rbf", data, runs, out, model;
+  std::string kind, kernel = "rbf", data, runs, out, model, sensor;
   TrainArgs train;
   int window = 5, count_thr = 4;
   double speed_thr = 0.2;
@@ -189,7 +190,7 @@ int RunTrain(const DetectArgs& s, const CLI::App* train, const std::vector<int>&
   CheckOutputsAreNotInputs({{"--out", s.out}}, {{"--data", s.data}});
   const TrainOptions opts = s.train.Options();
   CheckWritableLocation(s.out);
-  const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame);
+  const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame, s.sensor);
   const std::string kind = s.kind == "svm" ? "svm-" + s.kernel : s.kind;
   if (kind != "threshold") s.train.CheckFolds(train, data.size());  // only the others cross-validate
   const std::unique_ptr<Detector> det = TrainDetector(kind, data, opts);
@@ -216,7 +217,7 @@ int RunDetect(const DetectArgs& s, const std::vector<int>& runs) {
   }
   const bool incipient = det->name() == "incipient";
   det = WithResponse(std::move(det), s.response);
-  const std::vector<LabeledRun> data = LoadFrames(s.data, runs);
+  const std::vector<LabeledRun> data = LoadFrames(s.data, runs, s.sensor);
   size_t frames = 0;
   for (const auto& r : data) frames += r.frames.size();
   WriteFileAtomic(s.out, DecisionsCsv(*det, data, incipient, s.contact_measure));
@@ -236,11 +237,13 @@ int RunSlipBench(const DetectArgs& s, const CLI::App* bench, const std::atomic<b
   o.jobs = s.jobs;
   o.train = s.train.Options();
   o.score_onset_frame = s.train.score_onset_frame;
+  o.sensor = s.sensor;
   o.stop = stop;
   o.log = [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); };
   CheckOutputsAreNotInputs(FilesInFolder("--out", o.out_dir, BenchOutputFiles(o)),
                            {{"--dataset", o.dataset}, {"--config", s.config}});
   const size_t runs = o.dataset.empty() ? static_cast<size_t>(o.runs) : DatasetReader(o.dataset).run_indices().size();
+  if (!o.dataset.empty()) CheckSensorOption(o.dataset, o.sensor);
   s.train.CheckFolds(bench, runs / 2);  // the first half trains
   std::vector<std::string> sets;
   if (!std::isnan(s.speed)) sets.push_back(fmt::format("rail.retract_speed_mm_s={}", s.speed));
@@ -292,6 +295,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
       ->check(NonEmpty("a file name"));
   train->add_option("--kernel", s.kernel, "SVM kernel for 'svm': rbf (Gaussian, default) or linear.")
       ->check(CLI::IsMember({"rbf", "linear"}));
+  AddSensorOption(train, s.sensor);
   s.train.Add(train);
 
   eval = app.add_subcommand("evaluate", "Score a trained model on runs of a dataset (metrics table).");
@@ -306,6 +310,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
       ->check(NonEmpty("a response strategy, e.g. 2Fr1Sen"));
   eval->add_flag("--score-onset-frame", s.score_onset_frame,
                  "Score the frame whose velocity spans the onset as slip (default: not scored).");
+  AddSensorOption(eval, s.sensor);
 
   detect = app.add_subcommand(
       "detect", "Run a detector over recorded frames (HDF5 dataset or real-TacTip CSV) and write its decisions.");
@@ -317,6 +322,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
       ->required()
       ->check(NonEmpty("a .h5 dataset or a .csv recording"));
   detect->add_option("--runs", s.runs, "Runs of an HDF5 dataset (default: all).")->check(NonEmpty("runs, e.g. 0-19"));
+  AddSensorOption(detect, s.sensor);
   detect->add_option("--out", s.out, "Output CSV: run,frame,time_s,slip (and n_slipping for incipient).")
       ->required()
       ->check(NonEmpty("a file name"));
@@ -337,8 +343,10 @@ CLI::App* AddBench(CLI::App& app, DetectArgs& s) {
       "bench", "The slip benchmark: standard rail dataset, every detector trained and evaluated, hardware beside.");
   bench->add_option("--out", s.bench_out, "Output folder for bench.json, bench.csv and models (default bench-results).")
       ->check(NonEmpty("a folder"));
-  bench->add_option("--dataset", s.bench_dataset, "Use this dataset instead of generating the standard one.")
-      ->check(NonEmpty("an HDF5 dataset"));
+  CLI::Option* dataset =
+      bench->add_option("--dataset", s.bench_dataset, "Use this dataset instead of generating the standard one.")
+          ->check(NonEmpty("an HDF5 dataset"));
+  AddSensorOption(bench, s.sensor)->needs(dataset);
   bench->add_option("--runs", s.bench_runs, "Runs of the standard dataset (default 40; half train, half test).")
       ->check(CLI::Range(4, 10000));
   bench->add_option("--speed-mm-s", s.speed,
@@ -382,7 +390,8 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     if (*train) return RunTrain(*s, train, runs);
     if (*eval) {
       std::unique_ptr<Detector> det = WithResponse(LoadDetector(s->model), s->response);
-      const Evaluation e = Evaluate(*det, LoadDatasetRuns(s->data, runs, s->score_onset_frame), s->train.n_slip);
+      const Evaluation e =
+          Evaluate(*det, LoadDatasetRuns(s->data, runs, s->score_onset_frame, s->sensor), s->train.n_slip);
       std::printf("%s", FormatEvaluation(e, s->per_run).c_str());
       return 0;
     }

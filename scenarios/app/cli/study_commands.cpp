@@ -11,6 +11,7 @@
 #include "scenarios/app/cli/output_checks.h"
 #include "scenarios/contact_checks.h"
 #include "scenarios/incipient_report.h"
+#include "scenarios/slip_data.h"
 #include "scenarios/sweep.h"
 #include "sim/base/files.h"
 
@@ -28,7 +29,7 @@ struct StudyArgs {
   std::string out;
   bool quiet = false, no_plots = false;
   IncipientParams sweep_detector;
-  std::string report_what, report_path, report_csv;
+  std::string report_what, report_path, report_csv, report_sensor;
   IncipientParams report_params;
 };
 
@@ -93,9 +94,13 @@ int RunContactChecks(const ConfigArgs& c) {
 int RunReport(const StudyArgs& a) {
   CheckOutputsAreNotInputs({{"--csv", a.report_csv}}, {{"FILE", a.report_path}});
   if (!a.report_csv.empty()) CheckWritableLocation(a.report_csv);
+  CheckSensorOption(a.report_path, a.report_sensor);
   const DatasetReader reader(a.report_path);
   std::vector<IncipientRunMetrics> metrics;
-  for (int idx : reader.run_indices()) metrics.push_back(AnalyzeIncipientRun(reader.ReadRun(idx), a.report_params));
+  for (int idx : reader.run_indices()) {
+    const RunRecord run = reader.ReadRun(idx);
+    metrics.push_back(AnalyzeIncipientRun(run, ChooseSensor(run, a.report_sensor, a.report_path), a.report_params));
+  }
   std::printf("%s", FormatIncipientReport(metrics, SummarizeIncipient(metrics)).c_str());
   if (!a.report_csv.empty()) WriteFileAtomic(a.report_csv, IncipientCsv(metrics));
   return 0;
@@ -197,6 +202,7 @@ CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
       ->check(CLI::Range(1, 100000));
   c->add_option("--csv", a.report_csv, "Also write the per-run table as CSV; not the input FILE.")
       ->check(NonEmpty("a file name"));
+  AddSensorOption(c, a.report_sensor);
   return c;
 }
 

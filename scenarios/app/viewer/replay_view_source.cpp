@@ -13,10 +13,16 @@ ReplayViewSource::ReplayViewSource(const std::string& path, int index) : ReplayV
 
 ReplayViewSource::ReplayViewSource(StoredRun&& stored)
     : RailViewSource(stored.config, stored.record.index, stored.header.seed), stored_(std::move(stored)) {
-  if (stored_.record.n_pins != sensor().n_pins()) {
-    throw InputError(fmt::format("--replay {}: run {} stores {} pins, but its config builds {}", stored_.path,
-                                 stored_.record.index, stored_.record.n_pins, sensor().n_pins()));
+  const SensorRecord* kept = stored_.record.FindSensor(sensor().name());
+  if (kept == nullptr) {
+    throw InputError(fmt::format("--replay {}: run {} has no sensor '{}' (its sensors: {})", stored_.path,
+                                 stored_.record.index, sensor().name(), SensorNames(stored_.record)));
   }
+  if (kept->n_pins != sensor().n_pins()) {
+    throw InputError(fmt::format("--replay {}: run {} stores {} pins, but its config builds {}", stored_.path,
+                                 stored_.record.index, kept->n_pins, sensor().n_pins()));
+  }
+  stored_sensor_ = kept;
 }
 
 bool ReplayViewSource::Step() {
@@ -27,10 +33,10 @@ bool ReplayViewSource::Step() {
 
 void ReplayViewSource::CompareNewFrames() {
   // Frame by frame, as far as both have frames.
-  const size_t per_frame = 2 * static_cast<size_t>(stored_.record.n_pins);
+  const size_t per_frame = 2 * static_cast<size_t>(stored_sensor_->n_pins);
   const size_t frames = std::min(record().frames(), stored_.record.frames());
-  const std::vector<float>& resim = record().pos_px;
-  const std::vector<float>& kept = stored_.record.pos_px;
+  const std::vector<float>& resim = record().FindSensor(sensor().name())->pos_px;
+  const std::vector<float>& kept = stored_sensor_->pos_px;
   for (size_t i = compared_ * per_frame; i < frames * per_frame; ++i) {
     max_difference_px_ = std::max(max_difference_px_, std::abs(static_cast<double>(kept[i]) - resim[i]));
   }
@@ -47,9 +53,9 @@ size_t ReplayViewSource::NearestStoredFrame() const {
 }
 
 std::vector<GeomColour> ReplayViewSource::Colours() const {
-  const size_t at = NearestStoredFrame() * static_cast<size_t>(stored_.record.n_pins);
-  return PinLabelColours(sensor().ids().pin_geom, stored_.record.pin_contact.data() + at,
-                         stored_.record.pin_slip.data() + at);
+  const size_t at = NearestStoredFrame() * static_cast<size_t>(stored_sensor_->n_pins);
+  return PinLabelColours(sensor().ids().pin_geom, stored_sensor_->pin_contact.data() + at,
+                         stored_sensor_->pin_slip.data() + at);
 }
 
 std::string ReplayViewSource::DifferenceReport() const {

@@ -45,6 +45,7 @@ class ReplayViewSource : public RailViewSource {
   size_t NearestStoredFrame() const;
 
   const StoredRun stored_;
+  const SensorRecord* stored_sensor_ = nullptr;  // the shown sensor's recording in stored_
   double max_difference_px_ = 0.0;
   size_t compared_ = 0;  // frames compared
 };

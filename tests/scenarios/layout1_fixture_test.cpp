@@ -1,0 +1,77 @@
+// A dataset in layout 1 (one sensor's arrays directly under each run, no layout_version),
+// written by the tactip of that layout, reads as the same runs this tactip simulates, and
+// the commands that read pins see the same frames in it.
+//
+// assets/fixtures/layout1_rail.h5 was written by the last tactip of layout 1 with
+//   tactip generate rail <kFixtureArgs> --out layout1_rail.h5
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_helpers.h"
+#include "run_records.h"
+#include "sensors/dataset.h"
+
+namespace tactip {
+namespace {
+
+using testing::CliFolderTest;
+using testing::CliResult;
+using testing::Slurp;
+
+/// The fixture's job: two short runs of a 19-pin skin on acrylic with the external camera.
+const char* kFixtureArgs =
+    "--runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
+    "--set sensor.frame_rate_hz=20 --set rail.lift_mm=5 --set rail.hold_s=0.1 --set rail.settle_s=0.1 "
+    "--set rail.retract_speed_mm_s=5 --set rail.post_fall_s=0.1 --jobs 1 --quiet";
+
+const std::string kFixture = std::string(TACTIP_SOURCE_DIR) + "/assets/fixtures/layout1_rail.h5";
+
+class LayoutOneFixtureTest : public CliFolderTest {
+ protected:
+  void SetUp() override {
+    CliFolderTest::SetUp();
+    const CliResult g = Run(std::string("generate rail ") + kFixtureArgs + " --out " + P("now.h5"));
+    ASSERT_EQ(g.code, 0) << g.err;
+  }
+};
+
+TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
+  const DatasetReader old_file(kFixture), now(P("now.h5"));
+  EXPECT_EQ(old_file.header().layout_version, 1);
+  EXPECT_EQ(now.header().layout_version, 2);
+  EXPECT_EQ(old_file.header().config_yaml, now.header().config_yaml);
+  ASSERT_EQ(old_file.run_indices(), now.run_indices());
+  for (const int k : now.run_indices()) {
+    SCOPED_TRACE("run " + std::to_string(k));
+    RunRecord expected = now.ReadRun(k);
+    EXPECT_EQ(expected.actions.actuators.size(), 2u);
+    expected.actions = {};  // layout 1 records no controller
+    const RunRecord old_run = old_file.ReadRun(k);
+    ASSERT_FALSE(old_run.sensors.at(0).external_px.empty());
+    ExpectSameRun(old_run, expected);
+  }
+}
+
+TEST_F(LayoutOneFixtureTest, CommandsThatReadPinsSeeTheSameFrames) {
+  for (const std::string& args : {std::string("detect incipient --contact-measure"), std::string("report incipient")}) {
+    SCOPED_TRACE(args);
+    const bool report = args.rfind("report", 0) == 0;
+    const auto run = [&](const std::string& data, const std::string& out) {
+      return Run(report ? args + " " + data + " --csv " + out : args + " --data " + data + " --out " + out);
+    };
+    const CliResult a = run(kFixture, P("old.csv")), b = run(P("now.h5"), P("now.csv"));
+    ASSERT_EQ(a.code, 0) << a.err;
+    ASSERT_EQ(b.code, 0) << b.err;
+    EXPECT_EQ(Slurp(P("old.csv")), Slurp(P("now.csv")));
+    EXPECT_EQ(a.out, b.out);
+  }
+  const CliResult info = Run("info " + kFixture);
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_NE(info.out.find("sensors      tactip: 19 pins, skin_pattern smooth (layout 1)\n"), std::string::npos)
+      << info.out;
+}
+
+}  // namespace
+}  // namespace tactip
