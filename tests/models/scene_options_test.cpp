@@ -91,8 +91,8 @@ TEST_F(SceneOptionsTest, OuterSitesOnEveryPinWithTheExternalCameraOrWhenAsked) {
   EXPECT_EQ(sites.counts.ngeom, lean.counts.ngeom);
   EXPECT_EQ(sites.counts.nv, lean.counts.nv);
   const CompiledModel m = CompiledModel::FromXml(lean.scene.xml);
-  EXPECT_NO_THROW(m.SiteId(SkinNames::PinOuterSite(0)));
-  EXPECT_THROW(m.SiteId(SkinNames::PinOuterSite(1)), ModelError);
+  EXPECT_NO_THROW(m.SiteId(SkinNames{}.PinOuterSite(0)));
+  EXPECT_THROW(m.SiteId(SkinNames{}.PinOuterSite(1)), ModelError);
 }
 
 TEST_F(SceneOptionsTest, AFreeObjectHasSixDofsWhereTheRailHasOne) {
