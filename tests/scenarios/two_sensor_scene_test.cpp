@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numeric>
 #include <string>
 
@@ -24,16 +23,8 @@ constexpr const char* kShort = "--runs 1 --seed 3 --set rail.lift_mm=20 --set ra
 
 class TwoSensorSceneTest : public CliFolderTest {
  protected:
-  // The config file that puts two TacTips side by side, 50 mm apart.
-  std::string WriteTwoSensorConfig() {
-    const std::string path = P("two.yaml");
-    std::ofstream(path) << "sensors:\n"
-                           "  - name: left\n"
-                           "    offset_y_mm: -25\n"
-                           "  - name: right\n"
-                           "    offset_y_mm: 25\n";
-    return path;
-  }
+  // The shipped config file that puts two TacTips side by side, 50 mm apart.
+  static std::string TwoSensorConfig() { return std::string(TACTIP_SOURCE_DIR) + "/assets/scenes/rail-two-tactips.yaml"; }
   // Frames in which sensor `s` has a pin in contact.
   static int FramesInContact(const SensorRecord& s) {
     int frames = 0;
@@ -46,7 +37,7 @@ class TwoSensorSceneTest : public CliFolderTest {
 };
 
 TEST_F(TwoSensorSceneTest, TwoTacTipsSideBySideWriteTwoSensorGroupsAndHoldTheObjectTogether) {
-  const std::string config = WriteTwoSensorConfig();
+  const std::string config = TwoSensorConfig();
   const CliResult two = Run(std::string("generate rail ") + kShort + " --config " + config + " --out " + P("two.h5"));
   ASSERT_EQ(two.code, 0) << two.err;
   const CliResult one = Run(std::string("generate rail ") + kShort + " --out " + P("one.h5"));
@@ -78,7 +69,7 @@ TEST_F(TwoSensorSceneTest, TwoTacTipsSideBySideWriteTwoSensorGroupsAndHoldTheObj
 }
 
 TEST_F(TwoSensorSceneTest, EachSensorsElementsCarryItsNameInTheMjcf) {
-  const CliResult r = Run("export-mjcf rail --config " + WriteTwoSensorConfig() + " --out " + P("two.xml"));
+  const CliResult r = Run("export-mjcf rail --config " + TwoSensorConfig() + " --out " + P("two.xml"));
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string xml = testing::Slurp(P("two.xml"));
   for (const std::string name : {"left/mount", "right/mount", "left/pin0_pad", "right/pin126", "right/skin_shell"}) {
