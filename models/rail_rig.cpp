@@ -1,5 +1,7 @@
 #include "models/rail_rig.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -24,8 +26,20 @@ double ArmConfig::Omega(double moving_mass_kg) const { return std::sqrt(kp_N_m /
 
 double SensorCentreX(const SkinConfig& skin, double gap_m) { return -skin.OuterRadiusMm() * 1e-3 - gap_m; }
 
+void SensorMountConfig::ValidateRules(size_t index) const {
+  const std::string key = fmt::format("sensors.{}.name", index);
+  const bool starts = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0]));
+  const bool rest = std::all_of(name.begin(), name.end(), [](char ch) {
+    return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
+  });
+  if (!starts || !rest || name.size() > kMaxNameLength) {
+    FailRule(key, name, fmt::format("a sensor name is 1-{} letters, digits, '_' or '-', starting with a letter",
+                                    kMaxNameLength));
+  }
+}
+
 std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
-                                     double max_depth_m) {
+                                     double max_depth_m, double offset_y_m) {
   const double R = skin.OuterRadiusMm() * 1e-3;
   const double rc = skin.ContactRadiusMm() * 1e-3;
   const double Rc = rail.StimulusRadiusM();
@@ -34,7 +48,7 @@ std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& l
   for (const auto& p : lattice.pins) {
     // Centre of the pin's contact sphere at the deepest press, object aligned.
     const double px = cx + (R - rc) * p.normal[0];
-    const double py = (R - rc) * p.normal[1];
+    const double py = offset_y_m + (R - rc) * p.normal[1];
     const double pz = (R - rc) * p.normal[2];
     if (Rc == 0.0) {
       out[p.index] = px + rc > -kCullMarginM;
@@ -150,8 +164,11 @@ void AddRailAndObject(mjcf::Element& world, const RailSceneSpec& spec) {
       .Set("rgba", std::vector<double>{0.85, 0.6, 0.2, 1});
   const double Rc = spec.rail.StimulusRadiusM();
   if (Rc == 0.0) {
-    // Flat: a 50 x 50 x 10 mm plate whose face is the plane x = 0 (clear for acrylic).
-    stim.Set("type", "box").Set("pos", V3(0.005, 0, 0)).Set("size", V3(0.005, 0.025, 0.025));
+    // Flat: a 50 x 50 x 10 mm plate whose face is the plane x = 0 (clear for acrylic),
+    // widened to reach 25 mm beyond every sensor's axis.
+    double half_width = 0.025;
+    for (const SensorMountConfig& s : spec.sensors) half_width = std::max(half_width, std::abs(s.offset_y_mm) * 1e-3 + 0.025);
+    stim.Set("type", "box").Set("pos", V3(0.005, 0, 0)).Set("size", V3(0.005, half_width, 0.025));
     if (spec.rail.stimulus == "acrylic") stim.Set("rgba", std::vector<double>{0.8, 0.9, 1.0, 0.3});
     return;
   }
@@ -167,27 +184,15 @@ void AddRailAndObject(mjcf::Element& world, const RailSceneSpec& spec) {
       .SetInt("conaffinity", 0);
 }
 
-// Arm: x stage (normal), z stage (vertical), sensor mount (with a visual housing), skin.
-void AddArmAndSensor(mjcf::Element& world, const RailSceneSpec& spec, double m_sensor, mjcf::Element skin_body) {
-  const double mx = 2.0 * spec.arm.stage_mass_kg + m_sensor;
-  const double mz = spec.arm.stage_mass_kg + m_sensor;
-  const double x0 = SensorCentreX(spec.skin, spec.rail.approach_gap_mm * 1e-3);
-  mjcf::Element& ax = world.Add("body");
-  ax.Set("name", "arm_x_stage").Set("pos", V3(x0, 0, RailLayout::kAxisHeight));
-  ax.Add("joint").Set("name", RailNames::kArmX).Set("type", "slide").Set("axis", V3(1, 0, 0))
-      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mx));
-  ax.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
-  mjcf::Element& az = ax.Add("body");
-  az.Set("name", "arm_z_stage");
-  az.Add("joint").Set("name", RailNames::kArmZ).Set("type", "slide").Set("axis", V3(0, 0, 1))
-      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mz));
-  az.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
-  mjcf::Element& sensor = az.Add("body");
-  sensor.Set("name", RailNames::kSensor);
+// One sensor's mount on the z stage: its body (sensor frame), a visual housing, its skin.
+void AddSensor(mjcf::Element& stage, const RailSceneSpec& spec, const SensorMountConfig& mount, mjcf::Element skin_body) {
+  mjcf::Element& sensor = stage.Add("body");
+  sensor.Set("name", RailNames::SensorMount(mount.name));
+  if (mount.offset_y_mm != 0.0) sensor.Set("pos", V3(0, mount.offset_y_mm * 1e-3, 0));
   sensor.Add("inertial").Set("pos", V3(-0.02, 0, 0)).Set("mass", kSensorMassKg).Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
   if (spec.options.visual_geoms) {
     sensor.Add("geom")
-        .Set("name", "sensor_housing")
+        .Set("name", mount.Prefix() + "housing")
         .Set("type", "cylinder")
         .Set("pos", V3(-0.03, 0, 0))
         .Set("zaxis", V3(1, 0, 0))
@@ -199,26 +204,56 @@ void AddArmAndSensor(mjcf::Element& world, const RailSceneSpec& spec, double m_s
   sensor.Append(std::move(skin_body));
 }
 
+// Arm: x stage (normal), z stage (vertical), a mount per sensor (with a visual housing) and
+// its skin. `m_sensors` is the mass of all sensors.
+void AddArmAndSensors(mjcf::Element& world, const RailSceneSpec& spec, double m_sensors,
+                      std::vector<mjcf::Element> skin_bodies) {
+  const double mx = 2.0 * spec.arm.stage_mass_kg + m_sensors;
+  const double mz = spec.arm.stage_mass_kg + m_sensors;
+  const double x0 = SensorCentreX(spec.skin, spec.rail.approach_gap_mm * 1e-3);
+  mjcf::Element& ax = world.Add("body");
+  ax.Set("name", "arm_x_stage").Set("pos", V3(x0, 0, RailLayout::kAxisHeight));
+  ax.Add("joint").Set("name", RailNames::kArmX).Set("type", "slide").Set("axis", V3(1, 0, 0))
+      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mx));
+  ax.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
+  mjcf::Element& az = ax.Add("body");
+  az.Set("name", "arm_z_stage");
+  az.Add("joint").Set("name", RailNames::kArmZ).Set("type", "slide").Set("axis", V3(0, 0, 1))
+      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mz));
+  az.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
+  for (size_t k = 0; k < spec.sensors.size(); ++k) AddSensor(az, spec, spec.sensors[k], std::move(skin_bodies[k]));
+}
+
 }  // namespace
 
 BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   const PinLattice lattice = PinLattice::Build(spec.skin);
-  std::vector<bool> collidable = RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m);
-  if (spec.options.all_pins_collide) collidable.assign(lattice.size(), true);
-  SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s,
-                            RailOuterSitePins(spec, lattice.size()));
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
+  // A skin per sensor, its elements prefixed with the sensor's name.
+  std::vector<mjcf::Element> skin_bodies, tendons;
+  int n_collidable = 0;
+  for (const SensorMountConfig& mount : spec.sensors) {
+    std::vector<bool> collidable =
+        RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m, mount.offset_y_mm * 1e-3);
+    if (spec.options.all_pins_collide) collidable.assign(lattice.size(), true);
+    SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s,
+                              RailOuterSitePins(spec, lattice.size()), SkinNames{mount.Prefix()});
+    n_collidable += skin.n_collidable;
+    skin_bodies.push_back(std::move(skin.body));
+    for (auto& t : skin.tendons) tendons.push_back(std::move(t));
+  }
 
-  mjcf::Element root = SceneRoot("tactip_rail", spec.sim, spec.contact, -9.81, skin.n_collidable);
+  mjcf::Element root = SceneRoot("tactip_rail", spec.sim, spec.contact, -9.81, n_collidable);
   mjcf::Element& world = root.Add("worldbody");
   if (spec.options.visual_geoms) world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
   AddRailAndObject(world, spec);
-  AddArmAndSensor(world, spec, SensorMassKg(mech, lattice.size()), std::move(skin.body));
+  const double m_sensors = static_cast<double>(spec.sensors.size()) * SensorMassKg(mech, lattice.size());
+  AddArmAndSensors(world, spec, m_sensors, std::move(skin_bodies));
 
   // Passive skin coupling and the arm servos.
-  if (!skin.tendons.empty()) {
+  if (!tendons.empty()) {
     mjcf::Element& tendon = root.Add("tendon");
-    for (auto& t : skin.tendons) tendon.Append(std::move(t));
+    for (auto& t : tendons) tendon.Append(std::move(t));
   }
   mjcf::Element& act = root.Add("actuator");
   act.Add("position").Set("name", RailNames::kServoX).Set("joint", RailNames::kArmX).Set("kp", spec.arm.kp_N_m);
@@ -227,7 +262,7 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   BuiltScene out;
   out.xml = root.ToXml();
   out.n_pins = static_cast<int>(lattice.size());
-  out.n_collidable = skin.n_collidable;
+  out.n_collidable = n_collidable;
   return out;
 }
 

@@ -103,6 +103,32 @@ struct ArmConfig {
   double Omega(double moving_mass_kg) const;
 };
 
+/// One tactile sensor on the arm (an entry of the `sensors` list): its name and where it sits.
+/// The sensors share the arm, the skin design and the cameras' settings; each has its own
+/// pins, contacts, noise streams and dataset group.
+struct SensorMountConfig {
+  /// Longest sensor name.
+  static constexpr size_t kMaxNameLength = 32;
+  std::string name = "tactip";  ///< prefixes its MJCF elements ("tactip/pin3") and names its dataset group
+  double offset_y_mm = 0.0;     ///< sideways offset on the arm, across the rail
+
+  template <class V>
+  void Visit(V& v) {
+    v("name", name, "",
+      "The sensor's name: its dataset group (sensors/NAME/) and the prefix of its MJCF elements (NAME/pin3). "
+      "Letters, digits, '_' and '-', starting with a letter.",
+      Choices{});
+    v("offset_y_mm", offset_y_mm, "mm",
+      "Sideways offset of the sensor on the arm, across the rail (y); sensors side by side need at least the "
+      "housing's diameter between them. The flat plate widens to stay 25 mm beyond every sensor.",
+      Bounds::Closed(-100.0, 100.0));
+  }
+  /// Throws InputError for a name that is not an identifier (key "sensors.I.name" by `index`).
+  void ValidateRules(size_t index) const;
+  /// "NAME/": the prefix of the sensor's elements.
+  std::string Prefix() const { return name + "/"; }
+};
+
 /// Fixed positions of the rig in the world frame (metres).
 struct RailLayout {
   static constexpr double kAxisHeight = 0.1;   ///< sensor axis / stimulus centre height at rest
@@ -119,12 +145,14 @@ struct RailNames {
   static constexpr const char* kArmZ = "arm_z";
   static constexpr const char* kServoX = "servo_x";
   static constexpr const char* kServoZ = "servo_z";
-  static constexpr const char* kSensor = "sensor";
+  /// The body a sensor is mounted on (its frame is the sensor frame): "NAME/mount".
+  static std::string SensorMount(const std::string& sensor) { return sensor + "/mount"; }
 };
 
-/// Which pins can touch the stimulus when pressed to `max_depth_m` (with a 1 mm margin).
+/// Which pins of a sensor mounted `offset_y_m` sideways can touch the stimulus when pressed
+/// to `max_depth_m` (with a 1 mm margin).
 std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
-                                     double max_depth_m);
+                                     double max_depth_m, double offset_y_m = 0.0);
 
 /// MuJoCo's contact budget of a scene with `n_collidable` pin contacts: one contact per pin
 /// plus spare, and constraint rows for them (3 per contact with elliptic cones, 4 pyramidal)
@@ -169,6 +197,7 @@ struct RailSceneSpec {
   RailConfig rail;
   SkinConfig skin;
   ArmConfig arm;
+  std::vector<SensorMountConfig> sensors{SensorMountConfig{}};  ///< the tactile sensors on the arm
   double max_depth_m = 0.0;       ///< deepest press any run will make (for contact culling)
   bool external_markers = false;  ///< the external camera records every pin's outer contact point
   SceneOptions options;           ///< parts put back that the runs do not need (default: none)
@@ -178,14 +207,14 @@ struct RailSceneSpec {
 /// options.outer_sites), else the centre pin only.
 std::vector<bool> RailOuterSitePins(const RailSceneSpec& spec, size_t n_pins);
 
-/// Moving mass carried by the arm's z stage: sensor housing plus skin (kg).
+/// Moving mass of one sensor carried by the arm's z stage: housing plus skin (kg).
 double SensorMassKg(const SkinMechanics& mech, size_t n_pins);
 
 /// A built scene: the MJCF text and facts about it.
 struct BuiltScene {
   std::string xml;
-  int n_pins = 0;
-  int n_collidable = 0;
+  int n_pins = 0;        ///< pins of each sensor
+  int n_collidable = 0;  ///< pins with a contact geom, of all sensors
 };
 
 /// Assembles the rail scene: world, rail + slider + stimulus, arm + sensor + skin; only

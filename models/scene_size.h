@@ -14,8 +14,8 @@ inline constexpr double kMaxSolverStackBytes = 1024.0 * 1024.0 * 1024.0;
 
 /// The size of a rail scene.
 struct SceneSize {
-  int n_pins = 0;        ///< pins of the lattice
-  int n_collidable = 0;  ///< pins that can touch the stimulus (they carry a contact geom)
+  int n_pins = 0;        ///< pins of all sensors
+  int n_collidable = 0;  ///< pins that can touch the stimulus (they carry a contact geom), of all sensors
   int nv = 0;            ///< degrees of freedom
   int njmax = 0;         ///< constraint-row budget
   /// The stack MuJoCo reserves per mjData when the model does not set one:

@@ -289,12 +289,12 @@ double SkinMechanics::NormalDamping(double timestep_s) const {
   return std::max(pin_damping_Ns_m, StableDamping(StiffestOmega(), pin_mass_kg, timestep_s));
 }
 
-std::string SkinNames::PinBody(int i) { return fmt::format("pin{}", i); }
-std::string SkinNames::PinJoint(int i) { return fmt::format("pin{}_n", i); }
-std::string SkinNames::PinShearJoint(int i, char axis) { return fmt::format("pin{}_t{}", i, axis); }
-std::string SkinNames::PinGeom(int i) { return fmt::format("pin{}_pad", i); }
-std::string SkinNames::PinSite(int i) { return fmt::format("pin{}_inner", i); }
-std::string SkinNames::PinOuterSite(int i) { return fmt::format("pin{}_outer", i); }
+std::string SkinNames::PinBody(int i) const { return prefix + fmt::format("pin{}", i); }
+std::string SkinNames::PinJoint(int i) const { return prefix + fmt::format("pin{}_n", i); }
+std::string SkinNames::PinShearJoint(int i, char axis) const { return prefix + fmt::format("pin{}_t{}", i, axis); }
+std::string SkinNames::PinGeom(int i) const { return prefix + fmt::format("pin{}_pad", i); }
+std::string SkinNames::PinSite(int i) const { return prefix + fmt::format("pin{}_inner", i); }
+std::string SkinNames::PinOuterSite(int i) const { return prefix + fmt::format("pin{}_outer", i); }
 
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
                    const std::vector<bool>& collidable, double timestep_s) {
@@ -302,7 +302,8 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
 }
 
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
-                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site) {
+                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site,
+                   const SkinNames& names) {
   const SkinMechanics mech = SkinMechanics::From(skin, lattice);
   const double R = skin.radius_mm * 1e-3;
   const double R_out = skin.OuterRadiusMm() * 1e-3;
@@ -324,7 +325,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   // of magnitude above a pin's gel shear stiffness, so pins move together tangentially
   // and each has its own normal DOF. Otherwise it is fixed and pins shear on their own.
   mjcf::Element& shell = part.body;
-  shell.Set("name", SkinNames::kShell);
+  shell.Set("name", names.Shell());
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
                             "shear damping {:.3g} N s/m, normal damping {:.3g} N s/m",
@@ -336,7 +337,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   for (const char* axis : {"y", "z"}) {
     if (!shell_mode) break;
     shell.Add("joint")
-        .Set("name", std::string("skin_shear_") + axis)
+        .Set("name", names.Part(std::string("skin_shear_") + axis))
         .Set("type", "slide")
         .Set("axis", std::string(axis) == "y" ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
         .Set("stiffness", n * mech.k_shear_N_m)
@@ -355,12 +356,12 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     const auto& nrm = pin.normal;
     const double rb = R_out - rc;  // body origin = centre of the contact sphere
     mjcf::Element& b = shell.Add("body");
-    b.Set("name", SkinNames::PinBody(i)).Set("pos", std::vector<double>{rb * nrm[0], rb * nrm[1], rb * nrm[2]});
+    b.Set("name", names.PinBody(i)).Set("pos", std::vector<double>{rb * nrm[0], rb * nrm[1], rb * nrm[2]});
     b.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.pin_mass_kg)
         .Set("diaginertia", std::vector<double>{1e-9, 1e-9, 1e-9});
     if (normal_dof[i]) {
       b.Add("joint")
-          .Set("name", SkinNames::PinJoint(i))
+          .Set("name", names.PinJoint(i))
           .Set("user", std::vector<double>{kCompressionJointUser})
           .Set("type", "slide")
           .Set("axis", std::vector<double>{1, 0, 0})
@@ -371,7 +372,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
       // The pin's own shear springs: gel column (in series with its ridge).
       for (char axis : {'y', 'z'}) {
         b.Add("joint")
-            .Set("name", SkinNames::PinShearJoint(i, axis))
+            .Set("name", names.PinShearJoint(i, axis))
             .Set("type", "slide")
             .Set("axis", axis == 'y' ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
             .Set("stiffness", mech.k_tip_N_m)
@@ -380,7 +381,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     }
     if (collidable[i]) {
       b.Add("geom")
-          .Set("name", SkinNames::PinGeom(i))
+          .Set("name", names.PinGeom(i))
           .Set("type", "sphere")
           .Set("size", std::vector<double>{rc})
           .SetInt("contype", 0)
@@ -393,10 +394,10 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
       ++part.n_collidable;
     }
     const double inner = r_marker - rb;
-    b.Add("site").Set("name", SkinNames::PinSite(i)).Set("pos", std::vector<double>{inner * nrm[0], inner * nrm[1], inner * nrm[2]})
+    b.Add("site").Set("name", names.PinSite(i)).Set("pos", std::vector<double>{inner * nrm[0], inner * nrm[1], inner * nrm[2]})
         .Set("size", std::vector<double>{0.0005});
     if (outer_site[i]) {
-      b.Add("site").Set("name", SkinNames::PinOuterSite(i)).Set("pos", std::vector<double>{rc * nrm[0], rc * nrm[1], rc * nrm[2]})
+      b.Add("site").Set("name", names.PinOuterSite(i)).Set("pos", std::vector<double>{rc * nrm[0], rc * nrm[1], rc * nrm[2]})
           .Set("size", std::vector<double>{0.0003});
     }
   }
@@ -405,7 +406,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
                     double k) {
     if ((!m0 && !m1) || k <= 0.0) return;
     mjcf::Element t("fixed");
-    t.Set("name", name).Set("stiffness", k);
+    t.Set("name", names.Part(name)).Set("stiffness", k);
     if (m0) t.Add("joint").Set("joint", j0).Set("coef", 1.0);
     if (m1) t.Add("joint").Set("joint", j1).Set("coef", -1.0);
     part.tendons.push_back(std::move(t));
@@ -415,12 +416,12 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   if (skin.coupling != "none") {
     for (const auto& e : lattice.neighbours) {
       const bool m0 = normal_dof[e[0]], m1 = normal_dof[e[1]];
-      spring(fmt::format("bend_{}_{}", e[0], e[1]), SkinNames::PinJoint(e[0]), m0, SkinNames::PinJoint(e[1]), m1,
+      spring(fmt::format("bend_{}_{}", e[0], e[1]), names.PinJoint(e[0]), m0, names.PinJoint(e[1]), m1,
              mech.k_bend_N_m);
       if (!membrane) continue;
       for (char axis : {'y', 'z'}) {
-        spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), SkinNames::PinShearJoint(e[0], axis), true,
-               SkinNames::PinShearJoint(e[1], axis), true, mech.k_couple_N_m);
+        spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), names.PinShearJoint(e[0], axis), true,
+               names.PinShearJoint(e[1], axis), true, mech.k_couple_N_m);
       }
     }
   }

@@ -264,15 +264,21 @@ inline constexpr double kShearDofValidatedStepS = 0.001;
 /// shear DOFs), its validated step sim.timestep_s = kShearDofValidatedStepS.
 std::vector<std::string> SkinPresetOverrides(const std::string& name);
 
-/// Names used in the MJCF so scenarios can look the parts up.
+/// Names of a skin's elements in the MJCF, so scenarios can look the parts up. Every name
+/// starts with `prefix`: the sensor's name and '/' in a scene of named sensors ("left/pin3"),
+/// "" in a scene of one skin.
 struct SkinNames {
-  static std::string PinBody(int i);
-  static std::string PinJoint(int i);
-  static std::string PinShearJoint(int i, char axis);  ///< uncoupled skin: 'y' or 'z' shear DOF
-  static std::string PinGeom(int i);
-  static std::string PinSite(int i);       ///< inner end of the pin (what the camera sees)
-  static std::string PinOuterSite(int i);  ///< outer contact point (external markers)
-  static constexpr const char* kShell = "skin_shell";
+  std::string prefix;
+
+  std::string PinBody(int i) const;
+  std::string PinJoint(int i) const;
+  std::string PinShearJoint(int i, char axis) const;  ///< uncoupled skin: 'y' or 'z' shear DOF
+  std::string PinGeom(int i) const;
+  std::string PinSite(int i) const;       ///< inner end of the pin (what the camera sees)
+  std::string PinOuterSite(int i) const;  ///< outer contact point (external markers)
+  std::string Shell() const { return prefix + "skin_shell"; }
+  /// Any other element of the skin (shell joints, tendons): `prefix` + `name`.
+  std::string Part(const std::string& name) const { return prefix + name; }
 };
 
 /// The MJCF part of a skin: a body subtree to hang under the sensor mount, tendons,
@@ -292,9 +298,10 @@ struct SkinPart {
 /// shear mode must stay stable under explicit integration of the tendon springs).
 /// Every pin carries a site at its inner end (the marker the internal camera sees) and,
 /// where `outer_site[i]`, one at its outer contact point (external markers); the overload
-/// without `outer_site` gives every pin both.
+/// without `outer_site` gives every pin both. Elements are named by `names`.
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
-                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site);
+                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site,
+                   const SkinNames& names = {});
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
                    const std::vector<bool>& collidable, double timestep_s);
 

@@ -57,7 +57,8 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
   }
   // The z servo carries less mass than the x servo, so it is the stiffer of the two.
   StiffMode arm;
-  arm.omega = spec.arm.Omega(spec.arm.stage_mass_kg + SensorMassKg(mech, lattice.size()));
+  const double m_sensors = static_cast<double>(spec.sensors.size()) * SensorMassKg(mech, lattice.size());
+  arm.omega = spec.arm.Omega(spec.arm.stage_mass_kg + m_sensors);
   arm.zeta = spec.arm.damping_ratio;
   arm.name = "the arm servo (set by arm.kp_N_m, arm.stage_mass_kg)";
   modes.push_back(arm);

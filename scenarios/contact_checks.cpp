@@ -46,7 +46,7 @@ class PressedRig {
         dt_(model_.timestep()) {
     for (int i = 0; i < n; ++i) {
       try {
-        slot_[model_.GeomId(SkinNames::PinGeom(i))] = i;
+        slot_[model_.GeomId(SkinNames{}.PinGeom(i))] = i;
       } catch (const ModelError&) {
         // culled pin: cannot reach the plate
       }

@@ -39,16 +39,16 @@ double ImageGain(const PinholeCamera& camera, const std::array<double, 3>& p) {
 }  // namespace
 
 TactileSensorIds TactileSensorIds::Find(const CompiledModel& m, const std::string& body_name, int n_pins,
-                                        const std::vector<bool>& outer) {
+                                        const std::vector<bool>& outer, const SkinNames& names) {
   TactileSensorIds ids;
   ids.body = m.BodyId(body_name);
   ids.slot_of_geom.assign(m.ngeom(), -1);
   for (int i = 0; i < n_pins; ++i) {
-    ids.pin_site.push_back(m.SiteId(SkinNames::PinSite(i)));
-    ids.pin_outer_site.push_back(outer[i] ? m.SiteId(SkinNames::PinOuterSite(i)) : -1);
+    ids.pin_site.push_back(m.SiteId(names.PinSite(i)));
+    ids.pin_outer_site.push_back(outer[i] ? m.SiteId(names.PinOuterSite(i)) : -1);
     int g = -1;
     try {
-      g = m.GeomId(SkinNames::PinGeom(i));
+      g = m.GeomId(names.PinGeom(i));
     } catch (const ModelError&) {
       g = -1;  // culled: this pin cannot touch the stimulus
     }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "detectors/pin_frame.h"
+#include "models/skin.h"
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
 #include "sensors/labels.h"
@@ -26,10 +27,10 @@ struct TactileSensorIds {
   std::vector<int> pin_geom;        ///< per pin: the contact geom, or -1 (culled: cannot touch)
   std::vector<int> slot_of_geom;    ///< geom id -> pin index, or -1
 
-  /// Looks the sensor's elements up by name (body `body_name`, pins named by SkinNames);
+  /// Looks the sensor's elements up by name (body `body_name`, pins named by `names`);
   /// `outer[i]`: pin i carries an outer site. Throws ModelError naming a missing element.
   static TactileSensorIds Find(const CompiledModel& model, const std::string& body_name, int n_pins,
-                               const std::vector<bool>& outer);
+                               const std::vector<bool>& outer, const SkinNames& names = {});
 };
 
 /// What one sensor is, besides its MJCF part: cameras, noise, labelling.

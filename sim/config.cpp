@@ -4,10 +4,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -158,6 +160,13 @@ void Flatten(const YAML::Node& node, const std::string& prefix, FlattenWalk& wal
       }
       break;
     }
+    case YAML::NodeType::Sequence: {
+      // A list of sections: entry i under "key.i".
+      if (prefix.empty()) throw InputError(walk.source + ": top level must be a mapping of sections");
+      size_t i = 0;
+      for (const auto& item : node) Flatten(item, prefix + "." + std::to_string(i++), walk);
+      break;
+    }
     case YAML::NodeType::Scalar:
       walk.out[prefix] = node.Scalar();
       break;
@@ -165,7 +174,7 @@ void Flatten(const YAML::Node& node, const std::string& prefix, FlattenWalk& wal
       if (!prefix.empty()) throw InputError(walk.source + ": key '" + key + "' has no value");
       break;
     default:
-      throw InputError(walk.source + ": key '" + key + "' must be a scalar or a mapping");
+      throw InputError(walk.source + ": key '" + key + "' must be a scalar, a mapping or a list");
   }
 }
 
@@ -217,11 +226,48 @@ std::pair<std::string, std::string> ParseAssignment(const std::string& text) {
 }
 
 const std::string* AssignVisitor::Take(std::string_view name) {
-  auto it = values_.find(Key(name));
-  if (it == values_.end()) return nullptr;
+  const std::string key = Key(name);
+  auto it = values_.find(key);
+  if (it == values_.end()) {
+    const auto below = values_.lower_bound(key + ".");
+    if (below != values_.end() && below->first.rfind(key + ".", 0) == 0) {
+      throw InputError(config_detail::Escaped(key) + ": expected one value, not a list or a section");
+    }
+    return nullptr;
+  }
   taken_ = it->second;
   values_.erase(it);
   return &taken_;
+}
+
+size_t AssignVisitor::ListEntriesNamed(const std::string& list_key, size_t size) const {
+  // The indices I of keys "list_key.I.rest", each of which may name an entry or the next new one.
+  const std::string head = list_key + ".";
+  std::map<size_t, std::string> named;  // index -> one key naming it
+  for (auto it = values_.lower_bound(head); it != values_.end() && it->first.rfind(head, 0) == 0; ++it) {
+    const std::string rest = it->first.substr(head.size());
+    const char* end = rest.data() + std::min(rest.find('.'), rest.size());
+    size_t index = 0;
+    const auto [ptr, ec] = std::from_chars(rest.data(), end, index);
+    const bool leading_zero = rest[0] == '0' && end - rest.data() > 1;
+    if (ec == std::errc::result_out_of_range) index = kMaxListEntries;
+    else if (ec != std::errc() || ptr != end || leading_zero) continue;  // not an index: an unknown key
+    named.emplace(index, it->first);
+  }
+  size_t needed = size;
+  for (const auto& [index, key] : named) {
+    if (index >= kMaxListEntries) {
+      throw InputError(config_detail::Escaped(key) + ": the list '" + list_key + "' has at most " +
+                       std::to_string(kMaxListEntries) + " entries");
+    }
+    if (index > needed) {
+      throw InputError(config_detail::Escaped(key) + ": the list '" + list_key + "' has " + std::to_string(needed) +
+                       (needed == 1 ? " entry" : " entries") + "; add " + list_key + "." + std::to_string(needed) +
+                       " first");
+    }
+    needed = std::max(needed, index + 1);
+  }
+  return needed;
 }
 
 void AssignVisitor::operator()(std::string_view name, double& f, std::string_view, std::string_view, const Bounds&) {
@@ -276,29 +322,50 @@ void DocVisitor::operator()(std::string_view name, std::string& f, std::string_v
   fields.push_back({Key(name), "string", std::string(unit), f, allowed, std::string(doc)});
 }
 
+namespace {
+
+// "0", "12": the part of a dotted key that indexes a list entry.
+bool IsListIndex(const std::string& part) {
+  return !part.empty() && std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Splits "a.b.c" into its parts.
+std::vector<std::string> KeyParts(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string::size_type start = 0, dot;
+  while ((dot = key.find('.', start)) != std::string::npos) {
+    parts.push_back(key.substr(start, dot - start));
+    start = dot + 1;
+  }
+  parts.push_back(key.substr(start));
+  return parts;
+}
+
+}  // namespace
+
 std::string FieldsToYaml(const std::vector<FieldDoc>& fields) {
-  // Fields arrive grouped by section (declaration order), so emit a new mapping
-  // whenever the section path changes.
+  // Fields arrive grouped by section (declaration order), so emit a new mapping whenever
+  // the section path changes; a section whose parts below are list indices is a sequence.
   YAML::Emitter out;
   out << YAML::BeginMap;
-  std::vector<std::string> open;  // current section path
+  std::vector<std::pair<std::string, bool>> open;  // current section path; true: a sequence
+  auto close = [&] {
+    out << (open.back().second ? YAML::EndSeq : YAML::EndMap);
+    open.pop_back();
+  };
   for (const auto& f : fields) {
-    std::vector<std::string> parts;
-    std::string::size_type start = 0, dot;
-    while ((dot = f.key.find('.', start)) != std::string::npos) {
-      parts.push_back(f.key.substr(start, dot - start));
-      start = dot + 1;
-    }
-    const std::string leaf = f.key.substr(start);
+    std::vector<std::string> parts = KeyParts(f.key);
+    const std::string leaf = parts.back();
+    parts.pop_back();
     size_t common = 0;
-    while (common < open.size() && common < parts.size() && open[common] == parts[common]) ++common;
-    while (open.size() > common) {
-      out << YAML::EndMap;
-      open.pop_back();
-    }
+    while (common < open.size() && common < parts.size() && open[common].first == parts[common]) ++common;
+    while (open.size() > common) close();
     while (open.size() < parts.size()) {
-      out << YAML::Key << parts[open.size()] << YAML::Value << YAML::BeginMap;
-      open.push_back(parts[open.size()]);
+      const std::string& part = parts[open.size()];
+      const bool sequence = open.size() + 1 < parts.size() && IsListIndex(parts[open.size() + 1]);
+      if (!IsListIndex(part)) out << YAML::Key << part << YAML::Value;
+      out << (sequence ? YAML::BeginSeq : YAML::BeginMap);
+      open.emplace_back(part, sequence);
     }
     out << YAML::Key << leaf << YAML::Value;
     if (f.type == "string") {
@@ -307,53 +374,65 @@ std::string FieldsToYaml(const std::vector<FieldDoc>& fields) {
       out << f.value;
     }
   }
-  while (!open.empty()) {
-    out << YAML::EndMap;
-    open.pop_back();
-  }
+  while (!open.empty()) close();
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }
 
-std::string FieldsToCommentedYaml(const std::vector<FieldDoc>& fields, const std::string& header) {
-  std::string out = header;
-  std::string section;
-  auto comment = [&](const std::string& text) {
-    // Word-wrapped "  # ..." lines of at most ~100 characters.
-    std::string line;
-    size_t pos = 0;
-    while (pos < text.size()) {
-      size_t sp = text.find(' ', pos);
-      if (sp == std::string::npos) sp = text.size();
-      const std::string word = text.substr(pos, sp - pos);
-      if (!line.empty() && line.size() + 1 + word.size() > 96) {
-        out += "  # " + line + "\n";
-        line.clear();
-      }
-      line += (line.empty() ? "" : " ") + word;
-      pos = sp + 1;
+namespace {
+
+// Appends `text` as word-wrapped "# ..." lines of at most ~100 characters, indented by `indent`.
+void AppendComment(std::string& out, const std::string& text, const std::string& indent) {
+  std::string line;
+  size_t pos = 0;
+  while (pos < text.size()) {
+    size_t sp = text.find(' ', pos);
+    if (sp == std::string::npos) sp = text.size();
+    const std::string word = text.substr(pos, sp - pos);
+    if (!line.empty() && line.size() + 1 + word.size() > 96) {
+      out += indent + "# " + line + "\n";
+      line.clear();
     }
-    if (!line.empty()) out += "  # " + line + "\n";
-  };
+    line += (line.empty() ? "" : " ") + word;
+    pos = sp + 1;
+  }
+  if (!line.empty()) out += indent + "# " + line + "\n";
+}
+
+// A field's value as YAML text (strings double-quoted).
+std::string YamlValue(const FieldDoc& f) {
+  if (f.type != "string") return f.value;
+  std::string q = "\"";
+  for (char ch : f.value) {
+    if (ch == '"' || ch == '\\') q += '\\';
+    q += ch;
+  }
+  return q + "\"";
+}
+
+}  // namespace
+
+std::string FieldsToCommentedYaml(const std::vector<FieldDoc>& fields, const std::string& header) {
+  // Sections "name:" with their fields below; the entries of a list section "name.I" as
+  // "- " items under one "name:".
+  std::string out = header;
+  std::string section, heading;  // the last field's section, the last "name:" written
   for (const auto& f : fields) {
     const auto dot = f.key.rfind('.');
     const std::string sec = dot == std::string::npos ? "" : f.key.substr(0, dot);
     const std::string leaf = dot == std::string::npos ? f.key : f.key.substr(dot + 1);
-    if (sec != section) {
-      out += (section.empty() ? "\n" : "\n") + sec + ":\n";
-      section = sec;
+    const auto list_dot = sec.rfind('.');
+    const bool item = list_dot != std::string::npos && IsListIndex(sec.substr(list_dot + 1));
+    const bool first_of_section = sec != section;
+    section = sec;
+    const std::string sec_heading = item ? sec.substr(0, list_dot) : sec;
+    if (sec_heading != heading) {
+      heading = sec_heading;
+      out += "\n" + heading + ":\n";
     }
-    comment(f.doc + (f.unit.empty() ? "" : " [" + f.unit + "]"));
-    std::string value = f.value;
-    if (f.type == "string") {
-      std::string q = "\"";
-      for (char ch : value) {
-        if (ch == '"' || ch == '\\') q += '\\';
-        q += ch;
-      }
-      value = q + "\"";
-    }
-    out += "  " + leaf + ": " + value + "\n";
+    const std::string indent = item ? "    " : "  ";
+    AppendComment(out, f.doc + (f.unit.empty() ? "" : " [" + f.unit + "]"), indent);
+    out += (item && first_of_section ? "  - " : indent) + leaf + ": " + YamlValue(f) + "\n";
   }
   return out;
 }

@@ -92,6 +92,17 @@ class PathVisitor {
     sub.Visit(static_cast<Derived&>(*this));
     prefix_ = saved;
   }
+  /// Visits a list of config structs: entry i as the section "name.i." (keys such as
+  /// "sensors.1.name"; a YAML list under `name` gives the same keys). A visitor that assigns
+  /// values grows the list first to hold every index it is given (GrowList).
+  template <class Item>
+  void List(std::string_view name, std::vector<Item>& items) {
+    static_cast<Derived&>(*this).GrowList(Key(name), items);
+    for (size_t i = 0; i < items.size(); ++i) Section(std::string(name) + "." + std::to_string(i), items[i]);
+  }
+  /// Only AssignVisitor grows lists.
+  template <class Item>
+  void GrowList(const std::string&, std::vector<Item>&) {}
   /// Full dotted key of a field in the current section.
   std::string Key(std::string_view name) const { return prefix_ + std::string(name); }
 
@@ -120,10 +131,22 @@ FlatConfig FlattenYamlFile(const std::string& path);
 /// holds a control character (a line break: a value is one line).
 std::pair<std::string, std::string> ParseAssignment(const std::string& text);
 
+/// Most entries a config list may have.
+inline constexpr size_t kMaxListEntries = 64;
+
 /// Visitor that assigns values from a FlatConfig, erasing each key it consumes.
 class AssignVisitor : public config_detail::PathVisitor<AssignVisitor> {
  public:
   explicit AssignVisitor(FlatConfig& values) : values_(values) {}
+  /// Appends default entries to the list at dotted key `list_key` up to the largest index
+  /// the values name ("list_key.I.field"). Throws InputError for an index past the next new
+  /// entry ("sensors.3.name: the list 'sensors' has 1 entry; add sensors.1 first") or past
+  /// kMaxListEntries.
+  template <class Item>
+  void GrowList(const std::string& list_key, std::vector<Item>& items) {
+    const size_t needed = ListEntriesNamed(list_key, items.size());
+    if (needed > items.size()) items.resize(needed);
+  }
   void operator()(std::string_view name, double& f, std::string_view, std::string_view, const Bounds&);
   void operator()(std::string_view name, int& f, std::string_view, std::string_view, const Bounds&);
   void operator()(std::string_view name, bool& f, std::string_view, std::string_view);
@@ -131,6 +154,7 @@ class AssignVisitor : public config_detail::PathVisitor<AssignVisitor> {
 
  private:
   const std::string* Take(std::string_view name);
+  size_t ListEntriesNamed(const std::string& list_key, size_t size) const;
   FlatConfig& values_;
   std::string taken_;
 };

@@ -45,6 +45,28 @@ void CheckPress(const RailConfig& rail) {
   }
 }
 
+// The sensors: valid, distinct names; housings that do not overlap.
+void CheckSensors(const RailScenarioConfig& c) {
+  const double housing_mm = 2.0 * (c.skin.OuterRadiusMm() + 3.0);
+  for (size_t k = 0; k < c.sensors.size(); ++k) {
+    const SensorMountConfig& s = c.sensors[k];
+    s.ValidateRules(k);
+    for (size_t j = 0; j < k; ++j) {
+      if (c.sensors[j].name == s.name) {
+        FailRule(fmt::format("sensors.{}.name", k), s.name, fmt::format("sensors.{}.name is the same; each sensor "
+                                                                        "needs its own name", j));
+      }
+      const double apart_mm = std::abs(s.offset_y_mm - c.sensors[j].offset_y_mm);
+      if (apart_mm < housing_mm) {
+        FailRule(fmt::format("sensors.{}.offset_y_mm", k), s.offset_y_mm,
+                 fmt::format("{:.3g} mm from sensors.{} ('{}'): their housings ({:.3g} mm across) overlap; place the "
+                             "sensors at least {:.3g} mm apart",
+                             apart_mm, j, c.sensors[j].name, housing_mm, housing_mm));
+      }
+    }
+  }
+}
+
 // The scene must fit in the solver memory MuJoCo reserves per run; names the skin's pin
 // count key and the largest value that fits (or the ring spacing that does).
 void CheckSceneSize(const RailScenarioConfig& c) {
@@ -53,10 +75,11 @@ void CheckSceneSize(const RailScenarioConfig& c) {
   const bool fingerprint = c.skin.Fingerprint();
   const std::string key = fingerprint ? "skin.pins_per_ring" : "skin.rings";
   const int current = fingerprint ? c.skin.pins_per_ring : c.skin.rings;
+  const std::string skins = c.sensors.size() == 1 ? "the skin has" : fmt::format("the {} skins have", c.sensors.size());
   const std::string what = fmt::format(
-      "the skin has {} pins ({} can touch the stimulus), for which MuJoCo would reserve {:.3g} GiB of solver stack per "
-      "run (limit {:.3g} GiB)",
-      size.n_pins, size.n_collidable, size.stack_bytes / kGiB, kMaxSolverStackBytes / kGiB);
+      "{} {} pins ({} can touch the stimulus), for which MuJoCo would reserve {:.3g} GiB of solver stack per run "
+      "(limit {:.3g} GiB)",
+      skins, size.n_pins, size.n_collidable, size.stack_bytes / kGiB, kMaxSolverStackBytes / kGiB);
   RailScenarioConfig trial = c;
   for (int v = current - 1; v >= 1; --v) {
     (fingerprint ? trial.skin.pins_per_ring : trial.skin.rings) = v;
@@ -128,6 +151,7 @@ void RailScenarioConfig::ValidateRules() const {
     FailRule("sensor.frame_rate_hz", sensor.frame_rate_hz,
              fmt::format("one frame ({} s) is shorter than sim.timestep_s = {} s", frame_dt, sim.timestep_s));
   }
+  CheckSensors(*this);
   CheckSceneSize(*this);
   CheckTimestep(*this);
 }
@@ -170,6 +194,7 @@ RailSceneSpec RailScenarioConfig::SceneSpec() const {
   spec.rail = rail;
   spec.skin = skin;
   spec.arm = arm;
+  spec.sensors = sensors;
   spec.max_depth_m = (rail.press_depth_mm + rail.press_depth_jitter_mm) * 1e-3;
   spec.external_markers = external.enabled;
   return spec;

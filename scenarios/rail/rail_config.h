@@ -3,6 +3,7 @@
 // section, the cross-field rules and the scene it describes.
 
 #include <string>
+#include <vector>
 
 #include "models/rail_rig.h"
 #include "scenarios/rail/run_health.h"
@@ -24,6 +25,7 @@ struct RailScenarioConfig {
   ExternalCameraConfig external;
   LabelConfig labels;
   HealthConfig health;
+  std::vector<SensorMountConfig> sensors{SensorMountConfig{}};  ///< the TacTips on the arm (one by default)
 
   template <class V>
   void Visit(V& v) {
@@ -37,6 +39,7 @@ struct RailScenarioConfig {
     v.Section("external", external);
     v.Section("labels", labels);
     v.Section("health", health);
+    v.List("sensors", sensors);
   }
   /// Cross-field rules, including the timestep stability limit of the built model.
   void ValidateRules() const;

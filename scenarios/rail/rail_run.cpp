@@ -13,9 +13,10 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kOffDropM = 10e-3;  // an object this far below its held position has left the skin
 
-// The TacTip's cameras, noise and labelling, and its ridge-rocking marker shift.
-TactileSensorSpec SensorSpec(const RailScenarioConfig& cfg) {
+// A TacTip's cameras, noise and labelling, and its ridge-rocking marker shift.
+TactileSensorSpec SensorSpec(const RailScenarioConfig& cfg, const std::string& name) {
   TactileSensorSpec spec;
+  spec.name = name;
   spec.camera = cfg.sensor;
   spec.external = cfg.external;
   spec.labels = cfg.labels;
@@ -44,8 +45,11 @@ RailSceneIds::RailSceneIds(const RailScenarioConfig& cfg, const SceneOptions& op
   slide_dof = m.JointDofAdr(m.JointId(RailNames::kSlide)) + (options.object_free_joint ? 2 : 0);
   arm_z_dof = m.JointDofAdr(m.JointId(RailNames::kArmZ));
   const std::vector<bool> outer = RailOuterSitePins(spec, static_cast<size_t>(scene.n_pins));
-  sensor = TactileSensorIds::Find(m, RailNames::kSensor, scene.n_pins, outer);
-  sensor_spec = SensorSpec(cfg);
+  for (const SensorMountConfig& mount : cfg.sensors) {
+    sensors.push_back(TactileSensorIds::Find(m, RailNames::SensorMount(mount.name), scene.n_pins, outer,
+                                             SkinNames{mount.Prefix()}));
+    sensor_specs.push_back(SensorSpec(cfg, mount.name));
+  }
 }
 
 RailRun::Draws RailRun::Draw(const RailScenarioConfig& c, std::uint64_t run_seed) {
@@ -71,9 +75,6 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
       depth_m_(d.depth_m),
       mu_(d.mu),
       model_(ids.model->Copy()),
-      sensor_(ids.sensor_spec, ids.sensor, DeriveSeed(d.run_seed, 1), DeriveSeed(d.run_seed, 2)),
-      friction_(cfg.contact, cfg.labels, d.mu, ids.sensor.pin_geom, ids.stimulus_geom, DeriveSeed(d.run_seed, 3),
-                model_),
       sched_(cfg.rail, d.depth_m),
       schedule_controller_(sched_),
       controller_(controller ? controller : &schedule_controller_),
@@ -81,18 +82,18 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
       weight_N_(cfg.object.mass_kg * ids.model->gravity()),
       next_frame_step_(FrameStep(0, cfg.sensor.frame_rate_hz, cfg.sim.timestep_s)),
       limits_(StateLimits::For(cfg, ids.scene.n_collidable)),
-      health_(n_, cfg.health),
-      slid_before_gross_(n_, 0),
+      health_(n_ * static_cast<int>(ids.sensors.size()), cfg.health),
       end_time_(sched_.give_up),
       prev_margin_(kNaN),
       prev_skin_(kNaN),
       rel_ref_(kNaN),
       lift_rel_ref_(kNaN),
       creep_ref_(kNaN) {
+  AddChannels(cfg, d);
   model_.EnableEnergy();
   sim_.emplace(model_);
   sim_->Forward();
-  sensor_.Rest(*sim_);
+  for (Channel& ch : channels_) ch.sensor.Rest(*sim_);
   sum_.press_depth_mm = depth_m_ * 1e3;
   sum_.friction = mu_;
   sum_.retract_start_s = sched_.retract_start;
@@ -102,15 +103,34 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
   }
 }
 
+void RailRun::AddChannels(const RailScenarioConfig& cfg, const Draws& d) {
+  // Sensor k's noise streams and pin friction spread: the run's streams 1-3 for the first,
+  // streams of its own below stream 100 + k for the others.
+  channels_.reserve(im_.sensors.size());
+  for (size_t k = 0; k < im_.sensors.size(); ++k) {
+    const std::uint64_t base = k == 0 ? d.run_seed : DeriveSeed(d.run_seed, 100 + k);
+    const TactileSensorIds& ids = im_.sensors[k];
+    channels_.push_back(Channel{
+        TactileSensor(im_.sensor_specs[k], ids, DeriveSeed(base, 1), DeriveSeed(base, 2)),
+        FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_),
+        std::vector<std::uint8_t>(n_, 0), {}});
+    friction_switching_ = friction_switching_ || channels_.back().friction.switching();
+  }
+  health_px_.resize(2 * static_cast<size_t>(n_) * channels_.size());
+  health_contact_.resize(static_cast<size_t>(n_) * channels_.size());
+}
+
 void RailRun::InitRecord(RunRecord& rec) const {
   rec = RunRecord{};
   rec.index = index_;
   const size_t expect = static_cast<size_t>((sched_.give_up + 1.0) * c_.sensor.frame_rate_hz);
   rec.time.reserve(std::min<size_t>(expect, 200000));
-  // The scene's one tactile sensor, and the arm's two servos as the controls.
-  SensorRecord& s = rec.sensors.emplace_back();
-  s.name = sensor_.name();
-  s.n_pins = n_;
+  // The scene's tactile sensors, and the arm's two servos as the controls.
+  for (const Channel& ch : channels_) {
+    SensorRecord& s = rec.sensors.emplace_back();
+    s.name = ch.sensor.name();
+    s.n_pins = n_;
+  }
   rec.actions.actuators = {RailNames::kServoX, RailNames::kServoZ};
 }
 
@@ -162,10 +182,12 @@ bool RailRun::Step(RunRecord& rec) {
   const bool frame_now = n == next_frame_step_;
   const bool seek_onset = t >= sched_.lift_start && std::isnan(sum_.gross_slip_onset_s);
   const bool seek_prediction = t >= sched_.retract_start && std::isnan(sum_.predicted_onset_s);
-  if (!frame_now && !seek_onset && !seek_prediction && !friction_.switching()) return true;
+  if (!frame_now && !seek_onset && !seek_prediction && !friction_switching_) return true;
   ReadContacts();
-  if (sensor_.labels().n_slip > 0) slipped_since_frame_ = true;
-  if (friction_.switching()) friction_.Update(sensor_.samples(), sensor_.pin_slip(), model_);
+  if (n_slip_ > 0) slipped_since_frame_ = true;
+  for (Channel& ch : channels_) {
+    if (ch.friction.switching()) ch.friction.Update(ch.sensor.samples(), ch.sensor.pin_slip(), model_);
+  }
   TrackOnset(t, seek_onset);
   if (seek_prediction) TrackPrediction(t);
   if (!frame_now) return true;
@@ -177,25 +199,42 @@ bool RailRun::Step(RunRecord& rec) {
   RecordFrame(t, tf, rec);
   TrackEvents(t, tf);
   TrackHealth(t);
-  controller_->OnFrame(FrameInput{tf, {&sensor_.frame()}});
+  FrameInput frames{tf, {}};
+  for (const Channel& ch : channels_) frames.frames.push_back(&ch.sensor.frame());
+  controller_->OnFrame(frames);
   return true;
 }
 
 void RailRun::ReadContacts() {
-  sensor_.ReadContacts(*sim_);
   // Friction holds up to mu_s N in the rail's direction (it acts across the pressing
   // axis, which the rail is); a sloped contact's normal force also pushes along the rail.
   holding_N_ = 0.0;
-  const std::vector<double>& mu_pin = friction_.static_mu();
-  for (int i = 0; i < n_; ++i) {
-    const GeomContact& gc = sensor_.contacts()[i];
-    holding_N_ += mu_pin[i] * gc.normal_N - gc.normal_N * gc.normal_world[2];
+  for (Channel& ch : channels_) {
+    ch.sensor.ReadContacts(*sim_);
+    const std::vector<double>& mu_pin = ch.friction.static_mu();
+    for (int i = 0; i < n_; ++i) {
+      const GeomContact& gc = ch.sensor.contacts()[i];
+      holding_N_ += mu_pin[i] * gc.normal_N - gc.normal_N * gc.normal_world[2];
+    }
   }
-  // Gross slip: every contacting pin slides and the object moves along the rail relative
-  // to the sensor (with rail friction the skin alone may creep under a still object for a
-  // few frames first).
+  ReadLabels();
+}
+
+void RailRun::ReadLabels() {
+  // Gross slip: every contacting pin of every sensor slides and the object moves along the
+  // rail relative to the sensors (with rail friction the skin alone may creep under a still
+  // object for a few frames first).
+  n_contact_ = n_slip_ = 0;
+  bool every_contact_slides = true;
+  for (const Channel& ch : channels_) {
+    const FrameLabels& labels = ch.sensor.labels();
+    n_contact_ += labels.n_contact;
+    n_slip_ += labels.n_slip;
+    if (labels.n_contact > 0 && !labels.gross_slip) every_contact_slides = false;
+  }
+  const bool all_slide = n_contact_ > 0 && every_contact_slides;
   const double obj_speed = std::abs(sim_->Qvel(im_.slide_dof) - sim_->Qvel(im_.arm_z_dof));
-  gross_ = sensor_.labels().gross_slip && obj_speed > c_.labels.slip_speed_m_s ? 1 : 0;
+  gross_ = all_slide && obj_speed > c_.labels.slip_speed_m_s ? 1 : 0;
 }
 
 void RailRun::TrackOnset(double t, bool seek_onset) {
@@ -224,11 +263,12 @@ void RailRun::TrackPrediction(double t) {
 }
 
 void RailRun::RecordFrame(double t, double tf, RunRecord& rec) {
-  // The sensor's frame, the gross-slip label, the object's height, the controls; then plausibility.
+  // Each sensor's frame and the gross-slip label, the object's height, the controls; then plausibility.
   rec.time.push_back(tf);
-  SensorRecord& sensor = rec.sensors.front();
-  sensor_.Capture(*sim_, tf, sensor);
-  sensor.gross_slip.push_back(gross_);
+  for (size_t k = 0; k < channels_.size(); ++k) {
+    channels_[k].sensor.Capture(*sim_, tf, rec.sensors[k]);
+    rec.sensors[k].gross_slip.push_back(gross_);
+  }
   TrackIncipient(t);
   rec.object_height_m.push_back(sim_->BodyPos(im_.slider_body)[2] - RailLayout::kAxisHeight);
   // The arm's servo targets at this frame, in actuator order (servo_x, servo_z).
@@ -238,7 +278,12 @@ void RailRun::RecordFrame(double t, double tf, RunRecord& rec) {
 }
 
 void RailRun::CheckPlausible(double t) const {
-  const std::string why = ImplausibleState(limits_, sensor_.marker_shift_m(), sensor_.normal_N());
+  std::string why;
+  for (size_t k = 0; k < channels_.size() && why.empty(); ++k) {
+    const TactileSensor& sensor = channels_[k].sensor;
+    why = ImplausibleState(limits_, sensor.marker_shift_m(), sensor.normal_N());
+    if (!why.empty() && channels_.size() > 1) why = "sensor '" + sensor.name() + "': " + why;
+  }
   if (why.empty()) return;
   throw SimulationError(fmt::format("run {} stopped at t = {:.4f} s: {}: the solver diverged without a MuJoCo warning; "
                                     "use a smaller sim.timestep_s or more sim.iterations",
@@ -248,12 +293,13 @@ void RailRun::CheckPlausible(double t) const {
 void RailRun::TrackIncipient(double t) {
   // Incipient slip: partial slip from the retraction on, before gross slip.
   if (t < sched_.retract_start || !std::isnan(sum_.gross_slip_onset_s)) return;
-  const std::vector<std::uint8_t>& contact = sensor_.pin_contact();
-  const std::vector<std::uint8_t>& slip = sensor_.pin_slip();
-  if (contact_at_retract_.empty()) contact_at_retract_ = contact;
-  for (int i = 0; i < n_; ++i) slid_before_gross_[i] |= contact_at_retract_[i] & slip[i];
-  const FrameLabels& labels = sensor_.labels();
-  const bool partial = labels.n_slip > 0 && labels.n_slip < labels.n_contact;
+  for (Channel& ch : channels_) {
+    const std::vector<std::uint8_t>& slip = ch.sensor.pin_slip();
+    if (!retract_seen_) ch.contact_at_retract = ch.sensor.pin_contact();
+    for (int i = 0; i < n_; ++i) ch.slid_before_gross[i] |= ch.contact_at_retract[i] & slip[i];
+  }
+  retract_seen_ = true;
+  const bool partial = n_slip_ > 0 && n_slip_ < n_contact_;
   if (partial && std::isnan(sum_.incipient_onset_s)) sum_.incipient_onset_s = t;
 }
 
@@ -261,7 +307,7 @@ void RailRun::TrackEvents(double t, double tf) {
   // An object the skin cannot lift is left behind during the lift (its contact may be lost
   // before every pin is seen sliding): the run ends, not held.
   if (t >= sched_.lift_start && t < sched_.retract_start && std::isnan(sum_.gross_slip_onset_s)) {
-    const double rel = sim_->BodyPos(im_.slider_body)[2] - sensor_.pose().origin[2];
+    const double rel = sim_->BodyPos(im_.slider_body)[2] - channels_.front().sensor.pose().origin[2];
     if (std::isnan(lift_rel_ref_)) lift_rel_ref_ = rel;
     if (lift_rel_ref_ - rel > kOffDropM && !ending_) {
       left_behind_ = true;
@@ -276,8 +322,8 @@ void RailRun::TrackEvents(double t, double tf) {
   if (t < sched_.retract_start && std::isnan(sum_.gross_slip_onset_s)) return;
   // Object drop relative to the sensor, and sliding relative to the centre pin.
   const double obj_z = sim_->BodyPos(im_.slider_body)[2];
-  const double rel = obj_z - sensor_.pose().origin[2];
-  const double creep = obj_z - sim_->SitePos(im_.sensor.pin_outer_site[0])[2];
+  const double rel = obj_z - channels_.front().sensor.pose().origin[2];
+  const double creep = obj_z - sim_->SitePos(im_.sensors.front().pin_outer_site[0])[2];
   if (std::isnan(rel_ref_)) {
     rel_ref_ = rel;
     creep_ref_ = creep;
@@ -302,14 +348,21 @@ void RailRun::TrackHealth(double t) {
   // retraction on.
   const bool held = t >= sched_.lift_end && std::isnan(sum_.gross_slip_onset_s);
   const bool retracting = t >= sched_.retract_start;
-  const double creep = retracting ? sim_->BodyPos(im_.slider_body)[2] - sim_->SitePos(im_.sensor.pin_outer_site[0])[2] : kNaN;
+  const double creep = retracting ? sim_->BodyPos(im_.slider_body)[2] - sim_->SitePos(im_.sensors.front().pin_outer_site[0])[2] : kNaN;
   // While held the sensor moves only along its normal (the retraction): a pin pushed
   // quasi-statically moves at most that far, which the image shows at most gain-fold.
   const double x = arm_.x_m;
-  const double quasi_static_px = std::isnan(prev_frame_x_) ? 0.0 : sensor_.image_gain_px_m() * std::abs(x - prev_frame_x_);
+  const double gain_px_m = channels_.front().sensor.image_gain_px_m();
+  const double quasi_static_px = std::isnan(prev_frame_x_) ? 0.0 : gain_px_m * std::abs(x - prev_frame_x_);
   prev_frame_x_ = x;
+  // The pins of all sensors, in sensor order.
+  for (size_t k = 0; k < channels_.size(); ++k) {
+    const TactileSensor& sensor = channels_[k].sensor;
+    std::copy(sensor.clean_px().begin(), sensor.clean_px().end(), health_px_.begin() + 2 * n_ * static_cast<long>(k));
+    std::copy(sensor.pin_contact().begin(), sensor.pin_contact().end(), health_contact_.begin() + n_ * static_cast<long>(k));
+  }
   // Slip between frames counts too (contacts are read at every step while it matters).
-  health_.Frame(held, retracting, sensor_.clean_px().data(), sensor_.pin_contact().data(), slipped_since_frame_, creep, quasi_static_px);
+  health_.Frame(held, retracting, health_px_.data(), health_contact_.data(), slipped_since_frame_, creep, quasi_static_px);
   slipped_since_frame_ = false;
 }
 
@@ -319,11 +372,13 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   if (!std::isnan(sum_.incipient_onset_s) && !std::isnan(sum_.gross_slip_onset_s)) {
     sum_.incipient_lead_s = sum_.gross_slip_onset_s - sum_.incipient_onset_s;
   }
-  if (!contact_at_retract_.empty()) {
+  if (retract_seen_) {
     int n_c = 0, n_s = 0;
-    for (int i = 0; i < n_; ++i) {
-      n_c += contact_at_retract_[i];
-      n_s += slid_before_gross_[i];
+    for (const Channel& ch : channels_) {
+      for (int i = 0; i < n_; ++i) {
+        n_c += ch.contact_at_retract[i];
+        n_s += ch.slid_before_gross[i];
+      }
     }
     if (n_c > 0) sum_.pre_slip_fraction = static_cast<double>(n_s) / n_c;
   }
@@ -354,7 +409,7 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   rec.attrs["energy_gain"] = sum_.health.energy_gain;
   rec.text_attrs["health_reason"] = sum_.health.reason;
   rec.text_attrs["stimulus"] = c_.rail.stimulus;
-  rec.sensors.front().text_attrs["skin_pattern"] = c_.skin.pattern;
+  for (SensorRecord& sensor : rec.sensors) sensor.text_attrs["skin_pattern"] = c_.skin.pattern;
   sum_.actions = controller_->Actions();
   rec.actions.list = sum_.actions;
   sum_.controller_figures = controller_->Figures();

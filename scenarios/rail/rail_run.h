@@ -34,8 +34,8 @@ struct RailSceneIds {
   std::optional<CompiledModel> model;
   int servo_x = -1, servo_z = -1, slider_body = -1, stimulus_geom = -1;
   int slide_dof = -1, arm_z_dof = -1;
-  TactileSensorIds sensor;  ///< the TacTip's elements
-  TactileSensorSpec sensor_spec;  ///< its cameras, noise and labelling
+  std::vector<TactileSensorIds> sensors;       ///< each TacTip's elements, in the config's order
+  std::vector<TactileSensorSpec> sensor_specs;  ///< their cameras, noise and labelling
 
   /// Compiles the scene of `cfg` (with the parts `options` puts back) and looks its elements
   /// up; throws ModelError.
@@ -44,8 +44,11 @@ struct RailSceneIds {
 
 /// The state of one run, advanced step by step: each Step() drives the arm with the
 /// controller's targets, steps the physics, reads the contacts, switches friction, finds
-/// the onsets and, at each camera frame, has the sensor capture a frame, shows it to the
-/// controller and records it. Construct, Step() until it returns false, then Finish().
+/// the onsets and, at each camera frame, has every sensor capture a frame, shows them to
+/// the controller and records them. Construct, Step() until it returns false, then Finish().
+/// The object is held by all sensors together: gross slip is every contacting pin of every
+/// sensor sliding, incipient slip some but not all of them; creep is measured on the first
+/// sensor's centre pin.
 class RailRun {
  public:
   /// Draws the run's variations (depth, friction, noise streams) from (seed, index) and
@@ -70,10 +73,12 @@ class RailRun {
   /// Interrupted when `*stop` becomes true.
   RailRunSummary Execute(RunRecord& rec, const std::atomic<bool>* stop);
 
-  /// Simulated time (s), the simulation and the sensor (for viewers and controllers).
+  /// Simulated time (s), the simulation and the sensors (for viewers and controllers).
   double time() const { return sim_->time(); }
   const Simulation& simulation() const { return *sim_; }
-  const TactileSensor& sensor() const { return sensor_; }
+  /// The first sensor; sensor k of sensor_count().
+  const TactileSensor& sensor(size_t k = 0) const { return channels_[k].sensor; }
+  size_t sensor_count() const { return channels_.size(); }
   /// The protocol's timeline for this run's press depth.
   const RailSchedule& schedule() const { return sched_; }
 
@@ -87,7 +92,16 @@ class RailRun {
   RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int index, const Draws& draws,
           RailController* controller);
 
+  // One tactile sensor of the run: what it sees, its pins' friction, its pins' history.
+  struct Channel {
+    TactileSensor sensor;
+    FrictionLaw friction;
+    std::vector<std::uint8_t> slid_before_gross;   // per pin: slid between the retraction and gross slip
+    std::vector<std::uint8_t> contact_at_retract;  // per pin: in contact when the retraction started
+  };
+  void AddChannels(const RailScenarioConfig& cfg, const Draws& draws);
   void InitRecord(RunRecord& rec) const;
+  void ReadLabels();
   void ReadContacts();
   void TrackOnset(double t, bool seek_onset);
   void TrackPrediction(double t);
@@ -101,11 +115,11 @@ class RailRun {
   const RailScenarioConfig& c_;
   const RailSceneIds& im_;
   const int index_;             // run number
-  const int n_;                 // pins
+  const int n_;                 // pins of each sensor
   const double depth_m_, mu_;   // this run's press depth and static friction
   CompiledModel model_;         // this run's copy (friction changes per pin)
-  TactileSensor sensor_;
-  FrictionLaw friction_;
+  std::vector<Channel> channels_;
+  bool friction_switching_ = false;  // some pin's friction changes as it slides
   std::optional<Simulation> sim_;
   const RailSchedule sched_;
   ScheduleController schedule_controller_;
@@ -117,9 +131,10 @@ class RailRun {
   long long step_ = 0, frame_ = 0, next_frame_step_ = 0;
   bool started_ = false;
 
-  // Per step: the holding force and the gross-slip label.
+  // Per step: the holding force, the gross-slip label, the pins of all sensors in contact and slipping.
   double holding_N_ = 0.0;  // what the contacts can hold along the rail: sum of mu_s,i N_i + N_i n_i.up
   std::uint8_t gross_ = 0;
+  int n_contact_ = 0, n_slip_ = 0;
   bool slipped_since_frame_ = false;  // some pin slipped at a step since the last frame
   double prev_frame_x_ = std::numeric_limits<double>::quiet_NaN();  // the arm's commanded normal position at the last frame
 
@@ -130,8 +145,10 @@ class RailRun {
 
   // Run events and health.
   RailRunSummary sum_;
-  RunHealthMonitor health_;
-  std::vector<std::uint8_t> slid_before_gross_, contact_at_retract_;
+  RunHealthMonitor health_;     // over the pins of all sensors, in sensor order
+  std::vector<float> health_px_;                 // all sensors' noise-free pin positions of a frame
+  std::vector<std::uint8_t> health_contact_;     // and their contact labels
+  bool retract_seen_ = false;   // contact_at_retract is set
   double end_time_ = 0.0;
   double prev_margin_, prev_skin_, prev_t_ = 0.0;
   double rel_ref_, lift_rel_ref_, creep_ref_, creep_max_ = 0.0;

@@ -317,16 +317,16 @@ TEST_F(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormal
       if (c.tag() == "site") ++sites;
     }
     EXPECT_EQ(sites, 2) << "pin " << i << ": inner marker and outer contact point";
-    const std::vector<std::string> shear{SkinNames::PinShearJoint(i, 'y'), SkinNames::PinShearJoint(i, 'z')};
+    const std::vector<std::string> shear{SkinNames{}.PinShearJoint(i, 'y'), SkinNames{}.PinShearJoint(i, 'z')};
     if (coll[i]) {
       EXPECT_EQ(geoms, 1) << "pin " << i;
-      EXPECT_EQ(joints, (std::vector<std::string>{SkinNames::PinJoint(i), shear[0], shear[1]})) << "pin " << i;
+      EXPECT_EQ(joints, (std::vector<std::string>{SkinNames{}.PinJoint(i), shear[0], shear[1]})) << "pin " << i;
     } else {
       EXPECT_EQ(geoms, 0) << "pin " << i;
       EXPECT_EQ(joints, shear) << "non-collidable pin " << i;
     }
     for (const auto& c : body->children()) {
-      if (c.tag() != "joint" || c.Get("name") == SkinNames::PinJoint(i)) continue;
+      if (c.tag() != "joint" || c.Get("name") == SkinNames{}.PinJoint(i)) continue;
       EXPECT_DOUBLE_EQ(std::stod(c.Get("stiffness")), m.k_tip_N_m) << c.Get("name");
       EXPECT_DOUBLE_EQ(std::stod(c.Get("damping")), m.TipDamping(dt)) << c.Get("name");
     }
@@ -382,7 +382,7 @@ TEST_F(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithAFullShearLattic
     const BuiltScene scene = BuildRailScene(spec);
     EXPECT_EQ(scene.n_pins, std::string(name) == "fingerprint-v1" ? 91 : 127);
     ASSERT_LT(scene.n_collidable, scene.n_pins);
-    EXPECT_NE(scene.xml.find("name=\"membrane_"), std::string::npos);
+    EXPECT_NE(scene.xml.find("name=\"tactip/membrane_"), std::string::npos);
     const CompiledModel m = CompiledModel::FromXml(scene.xml);
     // Rig: arm x, arm z, rail slide; skin: two shear DOFs per pin, a normal DOF per collidable pin.
     EXPECT_EQ(m.nv(), 3 + 2 * scene.n_pins + scene.n_collidable);
@@ -390,13 +390,13 @@ TEST_F(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithAFullShearLattic
     const auto coll = RailCollidablePins(spec.skin, lat, spec.rail, spec.max_depth_m);
     for (size_t i = 0; i < lat.size(); ++i) {
       const int pin = static_cast<int>(i);
-      EXPECT_NO_THROW(m.SiteId(SkinNames::PinSite(pin)));
-      EXPECT_NO_THROW(m.SiteId(SkinNames::PinOuterSite(pin)));
-      EXPECT_NO_THROW(m.JointId(SkinNames::PinShearJoint(pin, 'z'))) << "pin " << i;
+      EXPECT_NO_THROW(m.SiteId(SkinNames{"tactip/"}.PinSite(pin)));
+      EXPECT_NO_THROW(m.SiteId(SkinNames{"tactip/"}.PinOuterSite(pin)));
+      EXPECT_NO_THROW(m.JointId(SkinNames{"tactip/"}.PinShearJoint(pin, 'z'))) << "pin " << i;
       if (coll[i]) {
-        EXPECT_NO_THROW(m.JointId(SkinNames::PinJoint(pin))) << "pin " << i;
+        EXPECT_NO_THROW(m.JointId(SkinNames{"tactip/"}.PinJoint(pin))) << "pin " << i;
       } else {
-        EXPECT_THROW(m.JointId(SkinNames::PinJoint(pin)), ModelError) << "pin " << i;
+        EXPECT_THROW(m.JointId(SkinNames{"tactip/"}.PinJoint(pin)), ModelError) << "pin " << i;
       }
     }
     // A deeper press reaches more pins and adds exactly one (normal) DOF for each.

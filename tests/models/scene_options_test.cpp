@@ -74,8 +74,8 @@ TEST_F(SceneOptionsTest, VisualGeomsAddTheBeamHousingPlateAndLightButNoContact) 
     EXPECT_EQ(visual.counts.ngeom_collidable, lean.counts.ngeom_collidable);
     EXPECT_EQ(visual.counts.nlight, 1);
     EXPECT_EQ(visual.counts.nv, lean.counts.nv);
-    EXPECT_NE(visual.scene.xml.find("sensor_housing"), std::string::npos);
-    EXPECT_EQ(lean.scene.xml.find("sensor_housing"), std::string::npos);
+    EXPECT_NE(visual.scene.xml.find("tactip/housing"), std::string::npos);
+    EXPECT_EQ(lean.scene.xml.find("tactip/housing"), std::string::npos);
   }
 }
 
@@ -91,8 +91,8 @@ TEST_F(SceneOptionsTest, OuterSitesOnEveryPinWithTheExternalCameraOrWhenAsked) {
   EXPECT_EQ(sites.counts.ngeom, lean.counts.ngeom);
   EXPECT_EQ(sites.counts.nv, lean.counts.nv);
   const CompiledModel m = CompiledModel::FromXml(lean.scene.xml);
-  EXPECT_NO_THROW(m.SiteId(SkinNames::PinOuterSite(0)));
-  EXPECT_THROW(m.SiteId(SkinNames::PinOuterSite(1)), ModelError);
+  EXPECT_NO_THROW(m.SiteId(SkinNames{"tactip/"}.PinOuterSite(0)));
+  EXPECT_THROW(m.SiteId(SkinNames{"tactip/"}.PinOuterSite(1)), ModelError);
 }
 
 TEST_F(SceneOptionsTest, AFreeObjectHasSixDofsWhereTheRailHasOne) {

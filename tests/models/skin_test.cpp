@@ -120,8 +120,8 @@ TEST_F(SkinTest, RailSceneCompilesWithOnlyReachablePinsCollidable) {
   EXPECT_GT(flat.n_collidable, 37);   // at least the pins inside the 3 mm contact
   EXPECT_LT(flat.n_collidable, 127);  // the outer rings cannot reach the plate
   const CompiledModel m = CompiledModel::FromXml(flat.xml);
-  EXPECT_NO_THROW(m.GeomId(SkinNames::PinGeom(0)));
-  EXPECT_THROW(m.GeomId(SkinNames::PinGeom(126)), ModelError);
+  EXPECT_NO_THROW(m.GeomId(SkinNames{"tactip/"}.PinGeom(0)));
+  EXPECT_THROW(m.GeomId(SkinNames{"tactip/"}.PinGeom(126)), ModelError);
   // A tighter curvature reaches fewer pins.
   spec.rail.stimulus = "curved20";
   const BuiltScene curved = BuildRailScene(spec);
@@ -138,8 +138,8 @@ TEST_F(SkinTest, UncoupledLatticeHasThreeSpringsPerPinAndNoCoupling) {
   const CompiledModel brush = CompiledModel::FromXml(scene.xml);
   // Shell: 2 shear DOFs for the whole skin; uncoupled: 2 per pin instead.
   EXPECT_EQ(brush.nv() - shell.nv(), 2 * 127 - 2);
-  EXPECT_NO_THROW(brush.JointId(SkinNames::PinShearJoint(5, 'y')));
-  EXPECT_THROW(shell.JointId(SkinNames::PinShearJoint(5, 'y')), ModelError);
+  EXPECT_NO_THROW(brush.JointId(SkinNames{"tactip/"}.PinShearJoint(5, 'y')));
+  EXPECT_THROW(shell.JointId(SkinNames{"tactip/"}.PinShearJoint(5, 'y')), ModelError);
   EXPECT_EQ(scene.xml.find("<fixed"), std::string::npos) << "no bending tendons in the uncoupled lattice";
 }
 

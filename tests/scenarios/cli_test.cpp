@@ -142,7 +142,7 @@ TEST_F(CliTest, ExportMjcfWritesTheCompilableScene) {
   const CliResult r = Run("export-mjcf rail --stimulus curved40 --out " + P("rail.xml"));
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string xml = Slurp(P("rail.xml"));
-  EXPECT_NE(xml.find("name=\"pin126\""), std::string::npos);
+  EXPECT_NE(xml.find("name=\"tactip/pin126\""), std::string::npos);
   EXPECT_NE(xml.find("type=\"sphere\""), std::string::npos) << "curved stimulus is a sphere cap";
   const CompiledModel m = CompiledModel::FromXml(xml);
   EXPECT_GE(m.nv(), 127 + 2 + 2 + 1);

@@ -19,8 +19,8 @@ struct RailModel {
   TactileSensorIds ids;
 
   RailModel() : spec(Spec()), scene(BuildRailScene(spec)), model(CompiledModel::FromXml(scene.xml)) {
-    ids = TactileSensorIds::Find(model, RailNames::kSensor, scene.n_pins,
-                                 RailOuterSitePins(spec, static_cast<size_t>(scene.n_pins)));
+    ids = TactileSensorIds::Find(model, RailNames::SensorMount("tactip"), scene.n_pins,
+                                 RailOuterSitePins(spec, static_cast<size_t>(scene.n_pins)), SkinNames{"tactip/"});
   }
   static RailSceneSpec Spec() {
     RailSceneSpec s;

@@ -97,8 +97,10 @@ TEST(ConfigTest, CrossFieldRuleNamesTheField) {
 TEST(ConfigTest, MalformedYamlNamesFileAndLine) {
   const std::string msg = ErrorOf([] { FlattenYaml("rail:\n  speed_mm_s: [1, 2\n", "bad.yaml"); });
   EXPECT_NE(msg.find("bad.yaml: malformed YAML at line"), std::string::npos) << msg;
-  EXPECT_NE(ErrorOf([] { FlattenYaml("rail:\n  speed_mm_s: [1, 2]\n", "list.yaml"); }).find("must be a scalar"),
-            std::string::npos);
+  EXPECT_EQ(ErrorOf([] { Outer c; ApplyFlat(c, FlattenYaml("rail:\n  speed_mm_s: [1, 2]\n", "list.yaml")); }),
+            "rail.speed_mm_s: expected one value, not a list or a section");
+  EXPECT_EQ(ErrorOf([] { Outer c; ApplyFlat(c, FlattenYaml("rail:\n  mode:\n    x: 1\n", "map.yaml")); }),
+            "rail.mode: expected one value, not a list or a section");
   EXPECT_NE(ErrorOf([] { FlattenYaml("- 1\n- 2\n", "seq.yaml"); }).find("top level must be a mapping"),
             std::string::npos);
 }

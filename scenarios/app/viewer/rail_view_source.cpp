@@ -52,21 +52,30 @@ bool RailViewSource::AdvanceTo(double time_s) {
 }
 
 std::vector<GeomColour> RailViewSource::Colours() const {
-  const TactileSensor& s = run_.sensor();
-  return PinLabelColours(s.ids().pin_geom, s.pin_contact().data(), s.pin_slip().data());
+  std::vector<GeomColour> colours;
+  for (size_t k = 0; k < run_.sensor_count(); ++k) {
+    const TactileSensor& s = run_.sensor(k);
+    for (const GeomColour& c : PinLabelColours(s.ids().pin_geom, s.pin_contact().data(), s.pin_slip().data())) {
+      colours.push_back(c);
+    }
+  }
+  return colours;
 }
 
 std::vector<int> RailViewSource::pin_geoms() const {
   std::vector<int> geoms;
-  for (int g : ids_.sensor.pin_geom) {
-    if (g >= 0) geoms.push_back(g);
+  for (const TactileSensorIds& sensor : ids_.sensors) {
+    for (int g : sensor.pin_geom) {
+      if (g >= 0) geoms.push_back(g);
+    }
   }
   return geoms;
 }
 
 CameraView RailViewSource::Camera() const {
   CameraView view;
-  view.look_at_bodies = {ids_.sensor.body, ids_.slider_body};
+  for (const TactileSensorIds& sensor : ids_.sensors) view.look_at_bodies.push_back(sensor.body);
+  view.look_at_bodies.push_back(ids_.slider_body);
   view.distance_m = kCameraDistanceM;
   view.azimuth_deg = 80.0;
   view.elevation_deg = -20.0;

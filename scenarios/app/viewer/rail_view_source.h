@@ -28,12 +28,12 @@ class RailViewSource : public ViewSource {
   /// Throws SimulationError.
   bool Step() override;
   const Simulation& sim() const override { return run_.simulation(); }
-  /// The pins by the labels of the sensor's last contact read-out: stick green, slip red,
+  /// The pins by the labels of the sensors' last contact read-out: stick green, slip red,
   /// no contact grey. The run reads the contacts at every camera frame, and at every step
   /// from the lift on until the gross-slip onset is found.
   std::vector<GeomColour> Colours() const override;
   double time() const override { return run_.time(); }
-  /// Looks at the middle of the sensor and the object, from the side.
+  /// Looks at the middle of the sensors and the object, from the side.
   CameraView Camera() const override;
   double force_scale_m_N() const override { return kForceScaleM_N; }
   /// "run K (seed S): PHASE", the protocol's phase now (press, lift, hold, retract...).
