@@ -98,16 +98,18 @@ void TactileSensor::ReadContacts(Simulation& sim) {
   labels_ = LabelFrame(samples_, spec_.labels, pin_contact_.data(), pin_slip_.data());
 }
 
-const PinFrame& TactileSensor::Capture(const Simulation& sim, double time_s, SensorRecord& rec) {
+const PinFrame& TactileSensor::Capture(const Simulation& sim, double time_s) {
   pose_ = {sim.BodyPos(ids_.body), sim.BodyRot(ids_.body)};
-  CapturePins(sim, rec);
-  if (spec_.external.enabled) CaptureExternal(sim, rec);
-  CaptureContacts(rec);
+  SensorReading& r = reading_;
+  for (auto* v : {&r.pos_m, &r.pos_px, &r.external_m, &r.external_px, &r.normal_N, &r.tangential_N}) v->clear();
+  CapturePins(sim);
+  if (spec_.external.enabled) CaptureExternal(sim);
+  CaptureContacts();
   FillFrame(time_s);
   return frame_;
 }
 
-void TactileSensor::CapturePins(const Simulation& sim, SensorRecord& rec) {
+void TactileSensor::CapturePins(const Simulation& sim) {
   // Pin inner ends in the sensor frame, and their image positions. A fingerprint ridge
   // rocks under its tangential contact force (quasi-statically, deflection f_t / k_rock at
   // the contact point), which moves the inner marker the other way.
@@ -121,7 +123,7 @@ void TactileSensor::CapturePins(const Simulation& sim, SensorRecord& rec) {
       const auto fs = pose_.Vector(tangential_[i]);
       for (int k = 0; k < 3; ++k) p[k] -= spec_.marker_rock_m_N * fs[k];
     }
-    for (int k = 0; k < 3; ++k) rec.pos_m.push_back(static_cast<float>(p[k]));
+    for (int k = 0; k < 3; ++k) reading_.pos_m.push_back(static_cast<float>(p[k]));
     image_gain_px_m_ = std::max(image_gain_px_m_, ImageGain(camera_, p));
     const auto uv = camera_.Project(p);
     px_[2 * i] = static_cast<float>(uv[0]);
@@ -131,37 +133,37 @@ void TactileSensor::CapturePins(const Simulation& sim, SensorRecord& rec) {
   clean_px_ = px_;
   noise_.Apply(px_, valid_, prev_px_);
   prev_px_ = px_;
-  rec.pos_px.insert(rec.pos_px.end(), px_.begin(), px_.end());
-  rec.valid.insert(rec.valid.end(), valid_.begin(), valid_.end());
+  reading_.pos_px = px_;
+  reading_.valid = valid_;
 }
 
-void TactileSensor::CaptureExternal(const Simulation& sim, SensorRecord& rec) {
+void TactileSensor::CaptureExternal(const Simulation& sim) {
   // External markers: the outer contact points, seen through the plate.
   for (int i = 0; i < n_; ++i) {
     const auto q = pose_.Point(sim.SitePos(ids_.pin_outer_site[i]));
-    for (int k = 0; k < 3; ++k) rec.external_m.push_back(static_cast<float>(q[k]));
+    for (int k = 0; k < 3; ++k) reading_.external_m.push_back(static_cast<float>(q[k]));
     const auto uv = ext_camera_.Project(q);
     ext_px_[2 * i] = static_cast<float>(uv[0]);
     ext_px_[2 * i + 1] = static_cast<float>(uv[1]);
   }
   ext_noise_.Apply(ext_px_, ext_valid_, prev_ext_px_);
   prev_ext_px_ = ext_px_;
-  rec.external_px.insert(rec.external_px.end(), ext_px_.begin(), ext_px_.end());
+  reading_.external_px = ext_px_;
 }
 
-void TactileSensor::CaptureContacts(SensorRecord& rec) {
+void TactileSensor::CaptureContacts() {
   // Contact forces (tangential in sensor y, z) and the stick/slip labels.
   for (int i = 0; i < n_; ++i) {
     normal_N_[i] = contacts_[i].normal_N;
-    rec.normal_N.push_back(static_cast<float>(contacts_[i].normal_N));
+    reading_.normal_N.push_back(static_cast<float>(contacts_[i].normal_N));
     const auto fts = pose_.Vector(tangential_[i]);
-    rec.tangential_N.push_back(static_cast<float>(fts[1]));
-    rec.tangential_N.push_back(static_cast<float>(fts[2]));
+    reading_.tangential_N.push_back(static_cast<float>(fts[1]));
+    reading_.tangential_N.push_back(static_cast<float>(fts[2]));
   }
-  rec.pin_contact.insert(rec.pin_contact.end(), pin_contact_.begin(), pin_contact_.end());
-  rec.pin_slip.insert(rec.pin_slip.end(), pin_slip_.begin(), pin_slip_.end());
+  reading_.pin_contact = pin_contact_;
+  reading_.pin_slip = pin_slip_;
   // Partial slip: some contacting pins slide while others stick.
-  rec.incipient.push_back(labels_.n_slip > 0 && labels_.n_slip < labels_.n_contact ? 1 : 0);
+  reading_.incipient = labels_.n_slip > 0 && labels_.n_slip < labels_.n_contact ? 1 : 0;
 }
 
 void TactileSensor::FillFrame(double time_s) {

@@ -12,7 +12,6 @@
 #include "detectors/pin_frame.h"
 #include "models/skin.h"
 #include "sensors/camera.h"
-#include "sensors/dataset.h"
 #include "sensors/labels.h"
 #include "sensors/sensor_frame.h"
 #include "sim/simulation.h"
@@ -43,6 +42,19 @@ struct TactileSensorSpec {
   double apex_x_m = 0.0;             ///< dome apex in the sensor frame (m)
 };
 
+/// What one sensor measured at one camera frame, as a dataset stores it: one frame of each
+/// per-pin array of a SensorRecord (N pins; positions in the sensor frame).
+struct SensorReading {
+  std::vector<float> pos_m;                          ///< (N,3) inner markers, m
+  std::vector<float> pos_px;                         ///< (N,2) reported image positions (noise, dropouts)
+  std::vector<std::uint8_t> valid;                   ///< (N) detected in this frame
+  std::vector<float> external_m, external_px;        ///< (N,3), (N,2) outer contact points; empty without the external camera
+  std::vector<float> normal_N;                       ///< (N) contact normal force
+  std::vector<float> tangential_N;                   ///< (N,2) contact tangential force along sensor y, z
+  std::vector<std::uint8_t> pin_contact, pin_slip;   ///< (N) ground-truth labels
+  std::uint8_t incipient = 0;                        ///< partial slip: some contacting pins slide, others stick
+};
+
 /// One tactile sensor of a run. Not thread-safe; one per run.
 class TactileSensor {
  public:
@@ -54,11 +66,10 @@ class TactileSensor {
   void Rest(const Simulation& sim);
   /// Reads the pins' contacts at the current step and labels them.
   void ReadContacts(Simulation& sim);
-  /// One camera frame of the current state (contacts as last read): appends positions,
-  /// forces and labels to this sensor's record `rec` (one frame's worth; not the time, nor
-  /// the gross-slip label, which the run decides) and returns the frame the camera
-  /// delivers, time-stamped `time_s`.
-  const PinFrame& Capture(const Simulation& sim, double time_s, SensorRecord& rec);
+  /// One camera frame of the current state (contacts as last read): measures positions,
+  /// forces and labels (reading(); not the gross-slip label, which the run decides) and
+  /// returns the frame the camera delivers, time-stamped `time_s`.
+  const PinFrame& Capture(const Simulation& sim, double time_s);
 
   const std::string& name() const { return spec_.name; }
   int n_pins() const { return n_; }
@@ -76,13 +87,14 @@ class TactileSensor {
   double image_gain_px_m() const { return image_gain_px_m_; }
   const std::vector<double>& marker_shift_m() const { return marker_shift_m_; }
   const std::vector<double>& normal_N() const { return normal_N_; }
-  /// The last frame as the camera delivered it.
+  /// The last frame as the camera delivered it, and everything measured with it.
   const PinFrame& frame() const { return frame_; }
+  const SensorReading& reading() const { return reading_; }
 
  private:
-  void CapturePins(const Simulation& sim, SensorRecord& rec);
-  void CaptureExternal(const Simulation& sim, SensorRecord& rec);
-  void CaptureContacts(SensorRecord& rec);
+  void CapturePins(const Simulation& sim);
+  void CaptureExternal(const Simulation& sim);
+  void CaptureContacts();
   void FillFrame(double time_s);
 
   const TactileSensorSpec spec_;
@@ -107,6 +119,7 @@ class TactileSensor {
   double image_gain_px_m_ = 0.0;
   std::vector<double> marker_shift_m_, normal_N_;
   PinFrame frame_;
+  SensorReading reading_;
 };
 
 }  // namespace tactip

@@ -120,18 +120,13 @@ void RailRun::AddChannels(const RailScenarioConfig& cfg, const Draws& d) {
   health_contact_.resize(static_cast<size_t>(n_) * channels_.size());
 }
 
-void RailRun::InitRecord(RunRecord& rec) const {
-  rec = RunRecord{};
-  rec.index = index_;
-  const size_t expect = static_cast<size_t>((sched_.give_up + 1.0) * c_.sensor.frame_rate_hz);
-  rec.time.reserve(std::min<size_t>(expect, 200000));
+void RailRun::InitRecord(RunRecord& rec) {
   // The scene's tactile sensors, and the arm's two servos as the controls.
-  for (const Channel& ch : channels_) {
-    SensorRecord& s = rec.sensors.emplace_back();
-    s.name = ch.sensor.name();
-    s.n_pins = n_;
-  }
-  rec.actions.actuators = {RailNames::kServoX, RailNames::kServoZ};
+  const size_t expect = static_cast<size_t>((sched_.give_up + 1.0) * c_.sensor.frame_rate_hz);
+  std::vector<SensorGroup> groups;
+  for (const Channel& ch : channels_) groups.push_back({ch.sensor.name(), n_});
+  recorder_.emplace(rec, index_, groups, std::vector<std::string>{RailNames::kServoX, RailNames::kServoZ},
+                    std::min<size_t>(expect, 200000));
 }
 
 void RailRun::RecordControls() {
@@ -196,7 +191,7 @@ bool RailRun::Step(RunRecord& rec) {
   const double tf = static_cast<double>(frame_) / c_.sensor.frame_rate_hz;
   ++frame_;
   next_frame_step_ = FrameStep(frame_, c_.sensor.frame_rate_hz, dt_);
-  RecordFrame(t, tf, rec);
+  RecordFrame(t, tf);
   TrackEvents(t, tf);
   TrackHealth(t);
   FrameInput frames{tf, {}};
@@ -262,18 +257,17 @@ void RailRun::TrackPrediction(double t) {
   prev_t_ = t;
 }
 
-void RailRun::RecordFrame(double t, double tf, RunRecord& rec) {
-  // Each sensor's frame and the gross-slip label, the object's height, the controls; then plausibility.
-  rec.time.push_back(tf);
-  for (size_t k = 0; k < channels_.size(); ++k) {
-    channels_[k].sensor.Capture(*sim_, tf, rec.sensors[k]);
-    rec.sensors[k].gross_slip.push_back(gross_);
+void RailRun::RecordFrame(double t, double tf) {
+  // Each sensor's frame, recorded with the gross-slip label, the object's height and the
+  // arm's servo targets at this frame (in actuator order: servo_x, servo_z); then plausibility.
+  std::vector<const SensorReading*> readings;
+  for (Channel& ch : channels_) {
+    ch.sensor.Capture(*sim_, tf);
+    readings.push_back(&ch.sensor.reading());
   }
+  const double height = sim_->BodyPos(im_.slider_body)[2] - RailLayout::kAxisHeight;
+  recorder_->Frame(tf, readings, gross_, height, {arm_.x_m, arm_.z_m});
   TrackIncipient(t);
-  rec.object_height_m.push_back(sim_->BodyPos(im_.slider_body)[2] - RailLayout::kAxisHeight);
-  // The arm's servo targets at this frame, in actuator order (servo_x, servo_z).
-  rec.actions.controls.push_back(arm_.x_m);
-  rec.actions.controls.push_back(arm_.z_m);
   CheckPlausible(t);
 }
 

@@ -21,6 +21,7 @@
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
 #include "sensors/friction_law.h"
+#include "sensors/run_recorder.h"
 #include "sensors/tactile_sensor.h"
 #include "sensors/labels.h"
 #include "sim/base/random.h"
@@ -100,12 +101,12 @@ class RailRun {
     std::vector<std::uint8_t> contact_at_retract;  // per pin: in contact when the retraction started
   };
   void AddChannels(const RailScenarioConfig& cfg, const Draws& draws);
-  void InitRecord(RunRecord& rec) const;
+  void InitRecord(RunRecord& rec);
   void ReadLabels();
   void ReadContacts();
   void TrackOnset(double t, bool seek_onset);
   void TrackPrediction(double t);
-  void RecordFrame(double t, double tf, RunRecord& rec);
+  void RecordFrame(double t, double tf);
   void TrackIncipient(double t);
   void TrackEvents(double t, double tf);
   void TrackHealth(double t);
@@ -124,6 +125,7 @@ class RailRun {
   const RailSchedule sched_;
   ScheduleController schedule_controller_;
   RailController* controller_;  // schedule_controller_ unless given
+  std::optional<RunRecorder> recorder_;  // from the first step on
   ArmTargets arm_;              // the targets of the last step
   const double dt_, weight_N_;
 

@@ -1,0 +1,66 @@
+#include "sensors/run_recorder.h"
+
+#include <stdexcept>
+
+namespace tactip {
+
+namespace {
+
+template <class T>
+void AppendAll(std::vector<T>& to, const std::vector<T>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+}  // namespace
+
+RunRecorder::RunRecorder(RunRecord& rec, int index, const std::vector<SensorGroup>& sensors,
+                         const std::vector<std::string>& actuators, size_t expected_frames)
+    : rec_(rec) {
+  rec_ = RunRecord{};
+  rec_.index = index;
+  rec_.time.reserve(expected_frames);
+  for (const SensorGroup& g : sensors) {
+    SensorRecord& s = rec_.sensors.emplace_back();
+    s.name = g.name;
+    s.n_pins = g.n_pins;
+  }
+  rec_.actions.actuators = actuators;
+}
+
+void RunRecorder::Frame(double time_s, const std::vector<const SensorReading*>& readings, std::uint8_t gross_slip,
+                        double object_height_m, const std::vector<double>& controls) {
+  if (readings.size() != rec_.sensors.size() || controls.size() != rec_.actions.actuators.size()) {
+    throw std::logic_error("run " + std::to_string(rec_.index) + ": a frame of " + std::to_string(readings.size()) +
+                           " sensor readings and " + std::to_string(controls.size()) + " controls for a record of " +
+                           std::to_string(rec_.sensors.size()) + " sensors and " +
+                           std::to_string(rec_.actions.actuators.size()) + " actuators");
+  }
+  for (size_t k = 0; k < readings.size(); ++k) {
+    const size_t n = static_cast<size_t>(rec_.sensors[k].n_pins);
+    if (readings[k]->valid.size() != n) {
+      throw std::logic_error("sensor '" + rec_.sensors[k].name + "': a reading of " +
+                             std::to_string(readings[k]->valid.size()) + " pins for a group of " + std::to_string(n));
+    }
+  }
+  // Checked first: a frame that does not fit leaves the record as it was.
+  rec_.time.push_back(time_s);
+  for (size_t k = 0; k < readings.size(); ++k) Append(*readings[k], gross_slip, rec_.sensors[k]);
+  rec_.object_height_m.push_back(object_height_m);
+  AppendAll(rec_.actions.controls, controls);
+}
+
+void RunRecorder::Append(const SensorReading& r, std::uint8_t gross_slip, SensorRecord& s) {
+  AppendAll(s.pos_m, r.pos_m);
+  AppendAll(s.pos_px, r.pos_px);
+  AppendAll(s.valid, r.valid);
+  AppendAll(s.external_m, r.external_m);
+  AppendAll(s.external_px, r.external_px);
+  AppendAll(s.normal_N, r.normal_N);
+  AppendAll(s.tangential_N, r.tangential_N);
+  AppendAll(s.pin_contact, r.pin_contact);
+  AppendAll(s.pin_slip, r.pin_slip);
+  s.incipient.push_back(r.incipient);
+  s.gross_slip.push_back(gross_slip);
+}
+
+}  // namespace tactip

@@ -1,0 +1,42 @@
+#pragma once
+// The recorder: builds a run's record frame by frame from what its parts measured (each
+// sensor's reading, the object's height, the actuators' controls), in the dataset's layout,
+// apart from the physics and the sensors that produce it.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sensors/dataset.h"
+#include "sensors/tactile_sensor.h"
+
+namespace tactip {
+
+/// One sensor group of a record: its name and pin count.
+struct SensorGroup {
+  std::string name;
+  int n_pins = 0;
+};
+
+/// Appends a run's frames to a RunRecord. The record must outlive the recorder.
+class RunRecorder {
+ public:
+  /// Starts `rec` afresh for run `index`: one group per sensor of `sensors` (in order), the
+  /// `actuators` whose controls each frame records; room for `expected_frames`.
+  RunRecorder(RunRecord& rec, int index, const std::vector<SensorGroup>& sensors,
+              const std::vector<std::string>& actuators, size_t expected_frames);
+
+  /// One frame at `time_s`: each sensor's reading (one per group, in order), the gross-slip
+  /// label (the object's, the same in every group), the object's height and the controls in
+  /// actuator order. Throws std::logic_error, recording nothing, if a reading or the controls do
+  /// not fit.
+  void Frame(double time_s, const std::vector<const SensorReading*>& readings, std::uint8_t gross_slip,
+             double object_height_m, const std::vector<double>& controls);
+
+ private:
+  static void Append(const SensorReading& reading, std::uint8_t gross_slip, SensorRecord& group);
+
+  RunRecord& rec_;
+};
+
+}  // namespace tactip
