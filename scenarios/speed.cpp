@@ -37,7 +37,7 @@ RailScenarioConfig LoadSpeedScene(const SpeedScene& scene, const std::vector<std
   ConfigSource src;
   src.overrides = scene.overrides;
   src.overrides.insert(src.overrides.end(), overrides.begin(), overrides.end());
-  return FindScenario(scene.scenario).load(src);
+  return RailFamily(FindScenario(scene.scenario)).Load(src);
 }
 
 SpeedRow MeasureRailRun(const SpeedScene& scene, const RailScenario& scenario, std::uint64_t seed) {

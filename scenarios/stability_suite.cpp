@@ -214,21 +214,21 @@ StabilityResult RunStabilityCase(const StabilityCase& c, const std::atomic<bool>
     return r;
   };
   // Before it runs: the config's bounds and rules, incl. the stability check.
-  const ScenarioEntry& entry = FindScenario(c.scenario);
-  ResolvedConfig cfg;
+  const RailFamilyScenario& registered = RailFamily(FindScenario(c.scenario));
+  RailScenarioConfig cfg;
   try {
-    cfg = entry.resolve(StabilityCaseSource(c));
+    cfg = registered.Load(StabilityCaseSource(c));
   } catch (const InputError& e) {
     std::vector<std::string> keys;
-    for (const auto& f : entry.describe(ConfigSource{})) keys.push_back(f.key);
+    for (const auto& f : registered.Describe(ConfigSource{})) keys.push_back(f.key);
     if (RefusalIsClear(e.what(), keys)) return finish(CaseOutcome::kRefused, e.what());
     return finish(CaseOutcome::kFailed, std::string("refused without naming a parameter and a safe value: ") + e.what());
   }
-  r.timestep_s = cfg.config.sim.timestep_s;
+  r.timestep_s = cfg.sim.timestep_s;
   // The run: any MuJoCo warning or non-finite value, unhealthy figures, or an object that
   // Coulomb says must (not) be held.
   try {
-    const RailScenario scenario(cfg.config);
+    const RailScenario scenario(cfg);
     RunRecord rec;
     const RailRunSummary s = scenario.Run(0, kSeed, rec, stop);
     r.run = s;

@@ -107,7 +107,7 @@ std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
   std::vector<RailScenarioConfig> configs;
   for (const auto& d : designs) {
     try {
-      configs.push_back(opts.scenario->load(DesignSource(opts.base, d)));
+      configs.push_back(opts.scenario->Load(DesignSource(opts.base, d)));
     } catch (const InputError& e) {
       throw InputError("design " + DesignText(d) + ": " + e.what());
     }

@@ -17,7 +17,7 @@ namespace tactip {
 
 /// What a sweep runs.
 struct SweepOptions {
-  const ScenarioEntry* scenario = nullptr;  ///< scenario whose config the grid modifies
+  const RailFamilyScenario* scenario = nullptr;  ///< scenario whose config the grid modifies
   ConfigSource base;                        ///< YAML file and overrides applied before each design's values
   std::vector<SweepParam> params;           ///< the grid axes (first varies slowest)
   int runs = 4;                             ///< runs per design (the same seeds for every design)

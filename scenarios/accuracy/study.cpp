@@ -41,8 +41,8 @@ struct RailSettingRuns {
   std::vector<RailRunSummary> summaries;
 };
 
-RailSettingRuns RunRailSetting(const ScenarioEntry& entry, const AccuracyOptions& o, const AccuracySetting& s) {
-  const RailScenario scenario(entry.load(WithSetting(o.base, s)));
+RailSettingRuns RunRailSetting(const RailFamilyScenario& family, const AccuracyOptions& o, const AccuracySetting& s) {
+  const RailScenario scenario(family.Load(WithSetting(o.base, s)));
   RailSettingRuns out;
   RunRailRuns(scenario, 0, o.runs, o.seed, o.jobs, o.stop, [&](RunRecord&& rec, const RailRunSummary& sum) {
     out.records.push_back(std::move(rec));
@@ -133,14 +133,14 @@ AccuracyReport MeasureSettings(const std::string& scene, const std::vector<Accur
 }
 
 AccuracyReport RunRailAccuracy(const AccuracyOptions& o) {
-  const ScenarioEntry& entry = FindScenario(o.scene);
+  const RailFamilyScenario& family = RailFamily(FindScenario(o.scene));
   const std::vector<AccuracySetting> settings = Selected(AccuracySettings(o), o.only);
   // Every setting's config is checked before anything runs, except those the stability
   // check refuses (reported as such).
-  entry.load(WithSetting(o.base, settings.front()));
+  family.Load(WithSetting(o.base, settings.front()));
   RailSettingRuns ref;
   return MeasureSettings(o.scene, settings, o, [&](const AccuracySetting& s) {
-    RailSettingRuns runs = RunRailSetting(entry, o, s);
+    RailSettingRuns runs = RunRailSetting(family, o, s);
     if (s.is_reference) ref = runs;
     return RailRow(s, runs, ref);
   });
@@ -207,7 +207,7 @@ std::vector<AccuracySetting> AccuracySettings(const AccuracyOptions& opts) {
   if (opts.scene != "rail" && opts.scene != "incipient") {
     throw InputError("accuracy: unknown scene '" + opts.scene + "' (known: rail, incipient, domes)");
   }
-  const RailScenarioConfig cfg = FindScenario(opts.scene).load(opts.base);
+  const RailScenarioConfig cfg = RailFamily(FindScenario(opts.scene)).Load(opts.base);
   return RailAccuracySettings(cfg.sim.timestep_s, cfg.contact.timeconst_s);
 }
 
@@ -215,7 +215,7 @@ void CheckAccuracyOptions(const AccuracyOptions& opts) {
   if (opts.runs < 1) throw InputError(fmt::format("--runs = {}: must be >= 1", opts.runs));
   const bool domes = opts.scene == "domes";
   const std::vector<AccuracySetting> settings = Selected(AccuracySettings(opts), opts.only);
-  if (!domes) FindScenario(opts.scene).load(WithSetting(opts.base, settings.front()));
+  if (!domes) RailFamily(FindScenario(opts.scene)).Load(WithSetting(opts.base, settings.front()));
 }
 
 AccuracyReport RunAccuracy(const AccuracyOptions& opts) {

@@ -18,7 +18,7 @@ namespace {
 // A scenario's config with a 5 mm lift and a 5 mm/s retraction: the object falls about
 // 4 s in. Hold from about 3.1 s to 3.6 s.
 RailScenarioConfig ShortRun(const std::string& scenario) {
-  return FindScenario(scenario).load({"", {"rail.lift_mm=5", "rail.retract_speed_mm_s=5"}});
+  return RailFamily(FindScenario(scenario)).Load({"", {"rail.lift_mm=5", "rail.retract_speed_mm_s=5"}});
 }
 constexpr double kHoldTimeS = 3.4;
 

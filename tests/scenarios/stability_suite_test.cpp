@@ -58,7 +58,7 @@ const Refusal kRefusals[] = {
 
 std::vector<std::string> RailKeys() {
   std::vector<std::string> keys;
-  for (const auto& f : FindScenario("rail").describe(ConfigSource{})) keys.push_back(f.key);
+  for (const auto& f : FindScenario("rail").Describe(ConfigSource{})) keys.push_back(f.key);
   return keys;
 }
 
@@ -69,7 +69,7 @@ TEST(StabilitySuiteTest, CasesHaveUniqueNamesAndEveryRefusalIsClear) {
   const auto keys = RailKeys();
   for (const auto& c : StabilityCases()) {
     EXPECT_TRUE(names.insert(c.name).second) << "duplicate case " << c.name;
-    const std::string msg = InputErrorOf([&] { FindScenario(c.scenario).resolve(StabilityCaseSource(c)); });
+    const std::string msg = InputErrorOf([&] { RailFamily(FindScenario(c.scenario)).Resolve(StabilityCaseSource(c)); });
     if (msg.empty()) continue;
     refused.insert(c.name);
     EXPECT_TRUE(RefusalIsClear(msg, keys)) << c.name << ": " << msg;

@@ -38,7 +38,7 @@ class ReplayViewSourceTest : public testing::MujocoWarningGuard {
     opts.seed = kSeed;
     opts.jobs = 1;
     opts.out_path = Path("generated.h5");
-    GenerateRailDataset(FindScenario("rail").load({"", kShortRun}), opts);
+    GenerateRailDataset(RailFamily(FindScenario("rail")).Load({"", kShortRun}), opts);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
   static std::string Path(const std::string& name) { return (dir_ / name).string(); }

@@ -72,7 +72,7 @@ class RailViewTest : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!display_.unavailable().empty()) GTEST_SKIP() << display_.unavailable();
-    source_ = std::make_unique<RailViewSource>(FindScenario("rail").load({}), 0, 1);
+    source_ = std::make_unique<RailViewSource>(RailFamily(FindScenario("rail")).Load({}), 0, 1);
     renderer_ = std::make_unique<SceneRenderer>(source_->model(), kWidth, kHeight);
     renderer_->SetView(source_->Camera());
   }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -50,15 +52,25 @@ void ConfigArgs::AddAutoTimestep(CLI::App* c) {
               "one camera frame, rounded down to a whole fraction of the frame period. Prints it on stderr.");
 }
 
-ResolvedConfig ResolveAndReport(const ScenarioEntry& entry, const ConfigSource& src) {
-  ResolvedConfig r = entry.resolve(src);
-  if (r.timestep) {
-    const TimestepChoice& t = *r.timestep;
-    std::fprintf(stderr,
-                 "auto-timestep: sim.timestep_s = %.6g s (bound %.6g s by %s; largest stable step %.6g s, set by %s)\n",
-                 t.timestep_s, t.bound_s, t.binding.c_str(), t.stable_s, t.stable_mode.c_str());
-  }
-  return r;
+namespace {
+
+// The --auto-timestep line on stderr, when a step was chosen.
+void ReportTimestep(const std::optional<TimestepChoice>& choice) {
+  if (!choice) return;
+  const TimestepChoice& t = *choice;
+  std::fprintf(stderr,
+               "auto-timestep: sim.timestep_s = %.6g s (bound %.6g s by %s; largest stable step %.6g s, set by %s)\n",
+               t.timestep_s, t.bound_s, t.binding.c_str(), t.stable_s, t.stable_mode.c_str());
+}
+
+}  // namespace
+
+void CheckAndReport(const Scenario& scenario, const ConfigSource& src) { ReportTimestep(scenario.Check(src)); }
+
+RailScenarioConfig ResolveRailAndReport(const Scenario& scenario, const ConfigSource& src) {
+  Resolved<RailScenarioConfig> r = RailFamily(scenario).Resolve(src);
+  ReportTimestep(r.timestep);
+  return std::move(r.config);
 }
 
 ConfigSource ConfigArgs::Source() const {

@@ -38,9 +38,11 @@ struct ConfigArgs {
   ConfigSource Source() const;
 };
 
-/// Resolves `src` for `entry` (which validates it) and, when it asks for --auto-timestep,
+/// Resolves `src` for `scenario` (which validates it) and, when it asks for --auto-timestep,
 /// prints the chosen step and what binds it on stderr.
-ResolvedConfig ResolveAndReport(const ScenarioEntry& entry, const ConfigSource& src);
+void CheckAndReport(const Scenario& scenario, const ConfigSource& src);
+/// The same for a rail-protocol scenario (RailFamily refuses another), returning its config.
+RailScenarioConfig ResolveRailAndReport(const Scenario& scenario, const ConfigSource& src);
 
 /// Registers --sensor NAME on `c` into `sensor`: which sensor of a dataset to read pins from
 /// (empty: the dataset's first).

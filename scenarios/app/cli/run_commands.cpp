@@ -69,7 +69,7 @@ RailScenarioConfig RowConfig(const CatchArgs& a, const std::string& stimulus, do
   ConfigArgs row = a.config;
   row.stimulus = stimulus;
   row.speed_mm_s = speed;
-  return FindScenario("rail").resolve(row.Source()).config;
+  return RailFamily(FindScenario("rail")).Load(row.Source());
 }
 
 int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
@@ -197,7 +197,7 @@ struct StopArgs {
 int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
   // Everything checked before the first trial: loop, config, output folder.
   a.loop.Validate();
-  const RailScenarioConfig cfg = FindScenario("incipient").resolve(a.config.Source()).config;
+  const RailScenarioConfig cfg = RailFamily(FindScenario("incipient")).Load(a.config.Source());
   NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
     std::error_code ec;

@@ -32,15 +32,15 @@ struct ScenarioArgs {
 };
 
 // tactip config: the table of keys, or the resolved config as (commented) YAML.
-int RunConfig(const ScenarioEntry& entry, const ConfigSource& src, const ScenarioArgs& a) {
-  ResolveAndReport(entry, src);
-  const auto fields = entry.describe(src);
+int RunConfig(const Scenario& scenario, const ConfigSource& src, const ScenarioArgs& a) {
+  CheckAndReport(scenario, src);
+  const auto fields = scenario.Describe(src);
   if (a.as_yaml && a.with_comments) {
     const std::string header = fmt::format(
         "# {} scenario: every config key with its meaning; values as resolved from the given options.\n"
         "# Use with: tactip generate {} --config FILE [--set key=value ...]\n"
         "# 'tactip config {}' prints the same keys with units and allowed ranges.\n",
-        entry.name, entry.name, entry.name);
+        scenario.name(), scenario.name(), scenario.name());
     std::printf("%s", FieldsToCommentedYaml(fields, header).c_str());
     return 0;
   }
@@ -56,11 +56,11 @@ int RunConfig(const ScenarioEntry& entry, const ConfigSource& src, const Scenari
 }
 
 // tactip export-mjcf: the scene's MJCF to a file or standard output.
-int RunExport(const ScenarioEntry& entry, const ConfigSource& src, const std::string& out) {
+int RunExport(const Scenario& scenario, const ConfigSource& src, const std::string& out) {
   CheckOutputsAreNotInputs({{"--out", out}}, {{"--config", src.yaml_path}});
   if (!out.empty()) CheckWritableLocation(out);
-  ResolveAndReport(entry, src);
-  const std::string xml = entry.export_mjcf(src);
+  CheckAndReport(scenario, src);
+  const std::string xml = scenario.ExportMjcf(src);
   if (out.empty()) {
     std::printf("%s", xml.c_str());
   } else {
@@ -82,29 +82,29 @@ void PrintRunProgress(int done, int total, int idx, const RailRunSummary& s) {
 }
 
 // tactip generate: simulate and write the dataset, then print its summary.
-int RunGenerate(const ScenarioEntry& entry, const ConfigSource& src, const ScenarioArgs& a,
+int RunGenerate(const Scenario& scenario, const ConfigSource& src, const ScenarioArgs& a,
                 const std::atomic<bool>* stop) {
   GenerateOptions opts;
-  opts.out_path = a.out.empty() ? entry.name + ".h5" : a.out;
+  opts.out_path = a.out.empty() ? scenario.name() + ".h5" : a.out;
   CheckOutputsAreNotInputs({{"--out", opts.out_path}}, {{"--config", src.yaml_path}});
-  ResolveAndReport(entry, src);  // validates the config before anything is printed or written
+  CheckAndReport(scenario, src);  // validates the config before anything is printed or written
   if (!a.shard.empty()) opts.shard = ParseShardOption(a.shard, a.runs);
   CheckWritableLocation(opts.out_path);
   opts.runs = a.runs;
   opts.seed = a.seed;
   opts.jobs = a.jobs;
-  opts.scenario = entry.name;
+  opts.scenario = scenario.name();
   opts.stop = stop;
   if (!a.quiet) {
     opts.progress = PrintRunProgress;
     if (opts.shard) {
       std::fprintf(stderr, "generating shard %s: %s %s into %s\n", opts.shard->text().c_str(),
-                   entry.name.c_str(), opts.shard->runs_text().c_str(), opts.out_path.c_str());
+                   scenario.name().c_str(), opts.shard->runs_text().c_str(), opts.out_path.c_str());
     } else {
-      std::fprintf(stderr, "generating %d %s run(s) into %s\n", a.runs, entry.name.c_str(), opts.out_path.c_str());
+      std::fprintf(stderr, "generating %d %s run(s) into %s\n", a.runs, scenario.name().c_str(), opts.out_path.c_str());
     }
   }
-  const GenerateResult r = entry.generate(src, opts);
+  const GenerateResult r = scenario.Generate(src, opts);
   std::fprintf(stderr, "done: %d runs, %.1f s simulated in %.1f s wall (%.1fx real time overall)\n", r.runs,
                r.sim_time_s, r.wall_time_s, r.sim_time_s / r.wall_time_s);
   PrintDatasetSummary(opts.out_path, false);
@@ -179,7 +179,7 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
   return [a, list, gen, merge, info, exp, cfg, stop]() -> int {
     if (*merge) return RunMerge(*a, stop);
     if (*list) {
-      for (const auto& s : Scenarios()) std::printf("%-12s %s\n", s.name.c_str(), s.description.c_str());
+      for (const auto& s : Scenarios()) std::printf("%-12s %s\n", s->name().c_str(), s->description().c_str());
       return 0;
     }
     if (*info) {
@@ -187,11 +187,11 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
       return 0;
     }
     if (!*gen && !*exp && !*cfg) return -1;
-    const ScenarioEntry& entry = FindScenario(a->config.scenario);
+    const Scenario& scenario = FindScenario(a->config.scenario);
     const ConfigSource src = a->config.Source();
-    if (*cfg) return RunConfig(entry, src, *a);
-    if (*exp) return RunExport(entry, src, a->out);
-    return RunGenerate(entry, src, *a, stop);
+    if (*cfg) return RunConfig(scenario, src, *a);
+    if (*exp) return RunExport(scenario, src, a->out);
+    return RunGenerate(scenario, src, *a, stop);
   };
 }
 

@@ -121,9 +121,9 @@ void PrintDesignProgress(int done, int total, const SweepDesignResult& r) {
 
 // tactip sweep: every design of the grid, CSVs and heatmaps in the output folder.
 int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
-  const ScenarioEntry& entry = FindScenario(a.config.scenario);
+  const RailFamilyScenario& scenario = RailFamily(FindScenario(a.config.scenario));
   SweepOptions o;
-  o.scenario = &entry;
+  o.scenario = &scenario;
   o.base = a.config.Source();
   for (const auto& p : a.sweep_params) o.params.push_back(ParseSweepParam(p));
   o.runs = a.sweep_runs;
@@ -139,7 +139,7 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
   if (!a.quiet) {
     o.started = [&](size_t designs) {
       std::fprintf(stderr, "sweeping %zu design(s) x %d run(s) of %s into %s/\n", designs, a.sweep_runs,
-                   entry.name.c_str(), o.out_dir.c_str());
+                   scenario.name().c_str(), o.out_dir.c_str());
     };
   }
   const auto wall0 = std::chrono::steady_clock::now();

@@ -22,7 +22,7 @@ std::string RunsText(const std::vector<int>& runs) {
 // The stored config text applied to the defaults (it holds every key), and checked.
 RailScenarioConfig StoredConfig(const std::string& path, const DatasetHeader& header) {
   try {
-    FindScenario(header.scenario);
+    RailFamily(FindScenario(header.scenario));
     RailScenarioConfig cfg;
     ApplyFlat(cfg, FlattenYaml(header.config_yaml, "its root attribute config_yaml"));
     ValidateConfig(cfg);

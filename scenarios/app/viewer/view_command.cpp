@@ -96,13 +96,13 @@ int Show(RailViewSource& source, const ViewArgs& a, const std::string& title) {
 
 // `view SCENARIO`: run --run of the scenario's config with master seed --seed.
 int ViewScenario(const ViewArgs& a) {
-  const ScenarioEntry& entry = FindScenario(a.config.scenario);
-  RailViewSource source(ResolveAndReport(entry, a.config.Source()).config, a.run, a.seed);
+  const Scenario& scenario = FindScenario(a.config.scenario);
+  RailViewSource source(ResolveRailAndReport(scenario, a.config.Source()), a.run, a.seed);
   if (a.time_s > source.give_up_s()) {
     throw InputError(fmt::format("--time = {}: run {} (seed {}) ends by t = {:.3f} s; choose a time in [0, {:.3f}] s",
                                  a.time_s, a.run, a.seed, source.give_up_s(), source.give_up_s()));
   }
-  return Show(source, a, "tactip view " + entry.name);
+  return Show(source, a, "tactip view " + scenario.name());
 }
 
 // `view --replay FILE`: run --run of the file re-simulated, with the stored labels; reports
