@@ -43,6 +43,9 @@ class RailController {
   /// The latest time the run may last (s): the protocol's give-up time unless the
   /// controller retracts more slowly.
   virtual double GiveUpTime(const RailSchedule& schedule) const { return schedule.give_up; }
+  /// How far past the protocol's deepest press the controller may drive the sensor in (m);
+  /// the run's plausibility limits (StateLimits) allow for it.
+  virtual double ExtraPressM() const { return 0.0; }
   /// What the controller did so far.
   virtual std::vector<ControllerAction> Actions() const { return {}; }
   /// Figures the controller measured (e.g. classification time), by name.

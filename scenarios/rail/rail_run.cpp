@@ -81,7 +81,7 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
       dt_(cfg.sim.timestep_s),
       weight_N_(cfg.object.mass_kg * ids.model->gravity()),
       next_frame_step_(FrameStep(0, cfg.sensor.frame_rate_hz, cfg.sim.timestep_s)),
-      limits_(StateLimits::For(cfg, ids.scene.n_collidable)),
+      limits_(StateLimits::For(cfg, ids.scene.n_collidable, controller_->ExtraPressM())),
       health_(n_ * static_cast<int>(ids.sensors.size()), cfg.health),
       end_time_(sched_.give_up),
       prev_margin_(kNaN),

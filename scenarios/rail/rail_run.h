@@ -62,6 +62,7 @@ class RailRun {
   void SetController(RailController* controller) {
     controller_ = controller ? controller : &schedule_controller_;
     end_time_ = controller_->GiveUpTime(sched_);
+    limits_ = StateLimits::For(c_, im_.scene.n_collidable, controller_->ExtraPressM());
   }
   /// Times every step's stages and records the controls into `out` (before the first step).
   void Instrument(RunInstrumentation* out);
@@ -141,7 +142,7 @@ class RailRun {
   double prev_frame_x_ = std::numeric_limits<double>::quiet_NaN();  // the arm's commanded normal position at the last frame
 
   // Per frame: is the state physically possible (StateLimits)?
-  const StateLimits limits_;
+  StateLimits limits_;  // for the controller in charge
 
   RunInstrumentation* instrument_ = nullptr;
 

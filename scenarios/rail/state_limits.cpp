@@ -12,13 +12,13 @@ constexpr double kGravity = 9.81;        // m/s^2, the rail scene's
 constexpr double kContactMarginM = 1e-3;  // as the culling of pins that cannot touch
 }  // namespace
 
-StateLimits StateLimits::For(const RailScenarioConfig& cfg, int n_collidable) {
+StateLimits StateLimits::For(const RailScenarioConfig& cfg, int n_collidable, double extra_press_m) {
   const PinLattice lattice = PinLattice::Build(cfg.skin);
   const SkinMechanics mech = SkinMechanics::From(cfg.skin, lattice);
   const double omega = mech.StiffestOmega();
   const double k_pin = omega * omega * mech.pin_mass_kg;  // k_normal + 12 k_bend
   const double deepest_mm = cfg.rail.press_depth_mm + cfg.rail.press_depth_jitter_mm;
-  const double press_m = std::max(0.0, deepest_mm) * 1e-3 + kContactMarginM;
+  const double press_m = std::max(0.0, deepest_mm) * 1e-3 + extra_press_m + kContactMarginM;
   const double weight_N = cfg.object.mass_kg * kGravity + cfg.rail.friction_N;
   StateLimits l;
   l.max_marker_shift_m = cfg.skin.OuterRadiusMm() * 1e-3;

@@ -23,8 +23,9 @@ struct StateLimits {
   /// The limits of `cfg`'s scene, in which `n_collidable` pins can touch the stimulus. A pin
   /// pressed by the deepest press plus 1 mm, with every neighbour in antiphase, carries at
   /// most (k_normal + 12 k_bend) times that; add the object's weight and the rail's friction,
-  /// for one pin or for every pin that can touch, and allow kAbsurdFactor on top.
-  static StateLimits For(const RailScenarioConfig& cfg, int n_collidable);
+  /// for one pin or for every pin that can touch, and allow kAbsurdFactor on top. A controller
+  /// that presses `extra_press_m` deeper than the protocol (a catch) deepens the press by that.
+  static StateLimits For(const RailScenarioConfig& cfg, int n_collidable, double extra_press_m = 0.0);
 };
 
 /// "" when a frame is within `limits`, else what is beyond them (one line). Per pin:

@@ -30,6 +30,18 @@ void CatchOptions::Validate() const {
   }
 }
 
+void CatchOptions::ValidateFor(const RailConfig& rail) const {
+  const double deepest_mm = rail.press_depth_mm + rail.press_depth_jitter_mm + catch_extra_mm;
+  if (deepest_mm <= RailConfig::kMaxPressDepthMm) return;
+  throw InputError(fmt::format(
+      "--catch-extra-mm = {}: the catch would press rail.press_depth_mm + rail.press_depth_jitter_mm + {} = {:.3g} "
+      "mm, beyond the {:.3g} mm a TacTip tolerates; use --catch-extra-mm <= {}",
+      config_detail::FormatReal(catch_extra_mm), config_detail::FormatReal(catch_extra_mm), deepest_mm,
+      RailConfig::kMaxPressDepthMm,
+      config_detail::FormatAtMost(std::max(0.0, RailConfig::kMaxPressDepthMm - rail.press_depth_mm -
+                                                    rail.press_depth_jitter_mm))));
+}
+
 CatchController::CatchController(const RailSchedule& schedule, std::unique_ptr<Detector> detector,
                                  const CatchOptions& options)
     : schedule_(schedule),

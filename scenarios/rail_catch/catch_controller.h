@@ -11,6 +11,7 @@
 
 #include "detectors/detector.h"
 #include "detectors/response.h"
+#include "models/rail_rig.h"
 #include "scenarios/rail/rail_controller.h"
 
 namespace tactip {
@@ -26,6 +27,10 @@ struct CatchOptions {
 
   /// Throws InputError naming the option and its allowed range.
   void Validate() const;
+  /// Throws InputError unless the catch stays within the press a TacTip tolerates: the
+  /// protocol's deepest press (rail.press_depth_mm + rail.press_depth_jitter_mm) plus
+  /// catch_extra_mm at most RailConfig::kMaxPressDepthMm.
+  void ValidateFor(const RailConfig& rail) const;
 };
 
 /// The rail protocol with a detector in the loop. One instance per run.
@@ -38,6 +43,8 @@ class CatchController : public RailController {
   ArmTargets Targets(double t) override;
   void OnFrame(const FrameInput& input) override;
   bool Done(double t) const override;
+  /// The catch presses catch_extra_mm past the press depth.
+  double ExtraPressM() const override { return options_.catch_extra_mm * 1e-3; }
   std::vector<ControllerAction> Actions() const override;
   /// classify_us: the measured wall time per Detector::Update (mean, microseconds).
   std::map<std::string, double> Figures() const override;

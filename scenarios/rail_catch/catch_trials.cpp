@@ -73,6 +73,7 @@ CatchTrial ScoreCatchTrial(const RailRunSummary& s, const RunRecord& rec, double
 
 std::vector<CatchTrial> RunCatchTrials(const RailScenarioConfig& cfg, const CatchTrialOptions& opts) {
   opts.loop.Validate();
+  opts.loop.ValidateFor(cfg.rail);
   LoadDetector(opts.model_path);  // a bad model fails here, before any trial runs
   // Long enough after a fall for the arm to come back in and the object to be watched.
   RailScenarioConfig c = cfg;

@@ -47,6 +47,11 @@ TEST_F(RailCatchCliTest, RefusesBadOptionsInOneLineBeforeAnyTrial) {
       {"--model " + model + " --response 2Fr2Sen", "--response '2Fr2Sen'"},
       {"--model " + model + " --stimulus flat,nosuch", "rail.stimulus"},
       {"--model " + P("missing.model"), "missing.model"},
+      {"--model " + model + " --catch-extra-mm 4",
+       "--catch-extra-mm = 4: the catch would press rail.press_depth_mm + rail.press_depth_jitter_mm + 4 = 7.1 mm, "
+       "beyond the 7 mm a TacTip tolerates; use --catch-extra-mm <= 3.9"},
+      {"--model " + model + " --catch-extra-mm 1 --set rail.press_depth_mm=6.5",
+       "--catch-extra-mm = 1: the catch would press rail.press_depth_mm + rail.press_depth_jitter_mm + 1 = 7.6 mm"},
   };
   for (const auto& c : cases) {
     const auto r = Run("run rail-catch --trials 1 --out " + P("out") + " " + c.args);

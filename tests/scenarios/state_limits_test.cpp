@@ -35,6 +35,14 @@ TEST(StateLimitsTest, LimitsFollowThePressTheWeightAndTheDome) {
   EXPECT_GT(heavy.max_total_force_N, l.max_total_force_N);
 }
 
+TEST(StateLimitsTest, AControllerThatPressesDeeperDeepensTheLimits) {
+  // A catch 3.9 mm past the 3.1 mm protocol press: the limits of an 8 mm press plus margin.
+  const RailScenarioConfig c;
+  const StateLimits l = StateLimits::For(c, 70, 3.9e-3);
+  EXPECT_NEAR(l.max_pin_force_N, 2.0 * (187.1 * 8.0e-3 + 0.1 * 9.81 + 0.005), 0.01);
+  EXPECT_NEAR(l.max_total_force_N, 2.0 * (70 * 187.1 * 8.0e-3 + 0.1 * 9.81 + 0.005), 0.2);
+}
+
 TEST(StateLimitsTest, AbsurdFramesAreNamedAndPlausibleOnesPass) {
   StateLimits l;
   l.max_marker_shift_m = 0.02;

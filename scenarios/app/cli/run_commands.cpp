@@ -89,6 +89,7 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
   for (const std::string& s : stimuli) {
     for (double v : speeds) rows.push_back(RowConfig(a, s, v));
   }
+  for (const RailScenarioConfig& row : rows) a.loop.ValidateFor(row.rail);
   NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
     std::error_code ec;
