@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "input_error.h"
 #include "sim/config.h"
 
 namespace tactip {
@@ -39,15 +40,6 @@ struct WithList {
   void ValidateRules() const {}
 };
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(ConfigListTest, AYamlListSetsOneEntryPerItem) {
   WithList c;
   ApplyFlat(c, FlattenYaml("main:\n  gain: 2\nentries:\n  - name: left\n    offset_mm: -24\n  - name: right\n    offset_mm: 24\n", "t.yaml"));
@@ -76,19 +68,19 @@ TEST(ConfigListTest, OverridesEditAnEntryOrAddTheNextOne) {
 }
 
 TEST(ConfigListTest, AnIndexPastTheNextEntryOrABadFieldIsRefusedByName) {
-  EXPECT_EQ(ErrorOf([] { LoadConfig<WithList>("", {"entries.2.name=x"}); }),
+  EXPECT_EQ(InputErrorOf([] { LoadConfig<WithList>("", {"entries.2.name=x"}); }),
             "entries.2.name: the list 'entries' has 1 entry; add entries.1 first");
-  EXPECT_EQ(ErrorOf([] { LoadConfig<WithList>("", {"entries.64.name=x"}); }),
+  EXPECT_EQ(InputErrorOf([] { LoadConfig<WithList>("", {"entries.64.name=x"}); }),
             "entries.64.name: the list 'entries' has at most 64 entries");
-  EXPECT_EQ(ErrorOf([] { LoadConfig<WithList>("", {"entries.99999999999999999999999.name=x"}); }),
+  EXPECT_EQ(InputErrorOf([] { LoadConfig<WithList>("", {"entries.99999999999999999999999.name=x"}); }),
             "entries.99999999999999999999999.name: the list 'entries' has at most 64 entries");
-  EXPECT_EQ(ErrorOf([] { LoadConfig<WithList>("", {"entries.0.colour=red"}); }),
+  EXPECT_EQ(InputErrorOf([] { LoadConfig<WithList>("", {"entries.0.colour=red"}); }),
             "unknown config key 'entries.0.colour'");
-  EXPECT_EQ(ErrorOf([] { LoadConfig<WithList>("", {"entries.name=x"}); }), "unknown config key 'entries.name'");
-  EXPECT_EQ(ErrorOf([] { LoadConfig<WithList>("", {"entries.01.name=x"}); }), "unknown config key 'entries.01.name'");
-  EXPECT_EQ(ErrorOf([] { LoadConfig<WithList>("", {"entries.1.offset_mm=60"}); }),
+  EXPECT_EQ(InputErrorOf([] { LoadConfig<WithList>("", {"entries.name=x"}); }), "unknown config key 'entries.name'");
+  EXPECT_EQ(InputErrorOf([] { LoadConfig<WithList>("", {"entries.01.name=x"}); }), "unknown config key 'entries.01.name'");
+  EXPECT_EQ(InputErrorOf([] { LoadConfig<WithList>("", {"entries.1.offset_mm=60"}); }),
             "entries.1.offset_mm = 60: must be <= 50");
-  EXPECT_EQ(ErrorOf([] { FlattenYaml("- a\n- b\n", "t.yaml"); }), "t.yaml: top level must be a mapping of sections");
+  EXPECT_EQ(InputErrorOf([] { FlattenYaml("- a\n- b\n", "t.yaml"); }), "t.yaml: top level must be a mapping of sections");
 }
 
 TEST(ConfigListTest, TheWrittenConfigReadsBackToTheSameEntries) {

@@ -27,22 +27,25 @@ void ConfigArgs::Add(CLI::App* c, bool with_scenario) {
         ->required()
         ->check(NonEmpty("a scenario name (see 'tactip scenarios')"));
   }
-  c->add_option("--config", config_path, "YAML config file; its keys override the built-in defaults (see assets/scenes/).")
-      ->check(NonEmpty("a YAML file"))
-      ->check(CLI::ExistingFile);
-  c->add_option("--set", sets,
-                "Override one config key, e.g. --set sensor.pixel_noise_px=0.3 (repeatable; applied after "
-                "--config and the shortcut options). 'tactip config SCENARIO' lists every key.")
-      ->type_name("KEY=VALUE")
-      ->check(NonEmpty("KEY=VALUE"));
+  AddFileAndSets(c, "YAML config file; its keys override the built-in defaults (see assets/scenes/).",
+                 "Override one config key, e.g. --set sensor.pixel_noise_px=0.3 (repeatable; applied after "
+                 "--config and the shortcut options). 'tactip config SCENARIO' lists every key.");
   c->add_option("--speed-mm-s", speed_mm_s, "Shortcut for --set rail.retract_speed_mm_s=V.")->check(FiniteNumber());
   c->add_option("--stimulus", stimulus, "Shortcut for --set rail.stimulus=S (flat, acrylic, curved80, curved40, curved20).")
       ->check(NonEmpty("one of flat, acrylic, curved80, curved40, curved20"));
-  c->add_option("--skin", skin,
-                "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling and the "
-                "variant's ridge/thickness/pin keys, and for a fingerprint skin its validated step sim.timestep_s = "
-                "0.001; applied before --set).")
-      ->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
+  AddSkin(c,
+          "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling and the "
+          "variant's ridge/thickness/pin keys, and for a fingerprint skin its validated step sim.timestep_s = "
+          "0.001; applied before --set).");
+}
+
+void ConfigArgs::AddFileAndSets(CLI::App* c, const std::string& config_help, const std::string& set_help) {
+  c->add_option("--config", config_path, config_help)->check(NonEmpty("a YAML file"))->check(CLI::ExistingFile);
+  c->add_option("--set", sets, set_help)->type_name("KEY=VALUE")->check(NonEmpty("KEY=VALUE"));
+}
+
+void ConfigArgs::AddSkin(CLI::App* c, const std::string& help) {
+  c->add_option("--skin", skin, help)->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
 }
 
 void ConfigArgs::AddAutoTimestep(CLI::App* c) {

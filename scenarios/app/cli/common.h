@@ -32,6 +32,10 @@ struct ConfigArgs {
   /// Registers the options on `c`, with the scenario as a required positional unless
   /// `with_scenario` is false.
   void Add(CLI::App* c, bool with_scenario = true);
+  /// Registers --config and --set on `c`, with these help texts.
+  void AddFileAndSets(CLI::App* c, const std::string& config_help, const std::string& set_help);
+  /// Registers --skin on `c`, with this help text.
+  void AddSkin(CLI::App* c, const std::string& help);
   /// Registers --auto-timestep on `c`.
   void AddAutoTimestep(CLI::App* c);
   /// The config source: file, skin preset, shortcuts, then --set in order.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -62,6 +63,19 @@ std::vector<double> ParseSpeeds(const std::string& text) {
     speeds.push_back(v);
   }
   return speeds;
+}
+
+// Writes each (name, text) into folder `out` (none when `out` is empty) and the closing
+// "done: N trial(s) in S s wall; wrote NAMES in OUT" line on stderr.
+void WriteTrialOutputs(const std::string& out, const std::vector<std::pair<std::string, std::string>>& files,
+                       size_t trials, double wall_s) {
+  std::string names;
+  for (const auto& [name, text] : files) {
+    if (!out.empty()) WriteFileAtomic((std::filesystem::path(out) / name).string(), text);
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  std::fprintf(stderr, "done: %zu trial(s) in %.1f s wall%s\n", trials, wall_s,
+               out.empty() ? "" : ("; wrote " + names + " in " + out).c_str());
 }
 
 // The config of one (stimulus, speed) row: the user's config with the two shortcuts set.
@@ -125,15 +139,10 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
   std::printf("rail catch: model %s, response %s, latency %g ms classify + %g ms arm, catch at %g mm/s\n%s",
               model.c_str(), a.loop.response.c_str(), a.loop.classify_ms, a.loop.arm_response_ms,
               a.loop.catch_speed_mm_s, table.c_str());
-  if (!a.out.empty()) {
-    const std::filesystem::path dir(a.out);
-    WriteFileAtomic((dir / "trials.csv").string(), CatchTrialsCsv(trials));
-    WriteFileAtomic((dir / "summary.csv").string(), CatchSummaryCsv(summary));
-    WriteFileAtomic((dir / "summary.txt").string(), table);
-  }
+  WriteTrialOutputs(a.out, {{"trials.csv", CatchTrialsCsv(trials)}, {"summary.csv", CatchSummaryCsv(summary)},
+                           {"summary.txt", table}},
+                    trials.size(), wall);
   folder.Keep();
-  std::fprintf(stderr, "done: %zu trial(s) in %.1f s wall%s%s\n", trials.size(), wall,
-               a.out.empty() ? "" : "; wrote trials.csv, summary.csv, summary.txt in ", a.out.c_str());
   return 0;
 }
 
@@ -144,14 +153,8 @@ CLI::App* AddRailCatch(CLI::App* run, CatchArgs& a) {
       "The hardware's online slip detection and grasp recovery: the rail protocol with a trained detector reading "
       "every camera frame; when the response strategy fires, the arm (after the loop's latency) moves back in to "
       "catch the object. Scores each trial caught / false_positive / dropped with the slip distance.");
-  c->add_option("--config", a.config.config_path, "YAML config file of the rail scenario.")
-      ->check(NonEmpty("a YAML file"))
-      ->check(CLI::ExistingFile);
-  c->add_option("--set", a.config.sets, "Override one rail config key (repeatable).")
-      ->type_name("KEY=VALUE")
-      ->check(NonEmpty("KEY=VALUE"));
-  c->add_option("--skin", a.config.skin, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2.")
-      ->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
+  a.config.AddFileAndSets(c, "YAML config file of the rail scenario.", "Override one rail config key (repeatable).");
+  a.config.AddSkin(c, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2.");
   c->add_option("--model", a.model, fmt::format("Trained detector (default: {}, which 'tactip bench' writes).",
                                                 kBenchDefaultModel))
       ->check(NonEmpty("a model file"));
@@ -226,14 +229,8 @@ int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
               cfg.rail.stimulus.c_str(), a.loop.step_mm, cfg.rail.retract_speed_mm_s, a.loop.pause_s,
               a.loop.markers.c_str(), a.loop.detector.window, a.loop.detector.speed_thr_px, a.loop.detector.count_thr,
               table.c_str());
-  if (!a.out.empty()) {
-    const std::filesystem::path dir(a.out);
-    WriteFileAtomic((dir / "trials.csv").string(), StopTrialsCsv(trials));
-    WriteFileAtomic((dir / "summary.txt").string(), table);
-  }
+  WriteTrialOutputs(a.out, {{"trials.csv", StopTrialsCsv(trials)}, {"summary.txt", table}}, trials.size(), wall);
   folder.Keep();
-  std::fprintf(stderr, "done: %zu trial(s) in %.1f s wall%s%s\n", trials.size(), wall,
-               a.out.empty() ? "" : "; wrote trials.csv, summary.txt in ", a.out.c_str());
   return 0;
 }
 
@@ -244,14 +241,8 @@ CLI::App* AddIncipientStop(CLI::App* run, StopArgs& a) {
       "The hardware's online incipient-slip detection on the transparent-acrylic rig: after the lift the arm retracts "
       "in small steps and stops when the incipient detector (bulk subtraction) fires. Scores each trial stopped / "
       "stopped_late / missed. Config: the incipient scenario's (fingerprint-v2 skin by default).");
-  c->add_option("--config", a.config.config_path, "YAML config file of the incipient scenario.")
-      ->check(NonEmpty("a YAML file"))
-      ->check(CLI::ExistingFile);
-  c->add_option("--set", a.config.sets, "Override one config key (repeatable).")
-      ->type_name("KEY=VALUE")
-      ->check(NonEmpty("KEY=VALUE"));
-  c->add_option("--skin", a.config.skin, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (default).")
-      ->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
+  a.config.AddFileAndSets(c, "YAML config file of the incipient scenario.", "Override one config key (repeatable).");
+  a.config.AddSkin(c, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (default).");
   c->add_option("--speed-mm-s", a.config.speed_mm_s, "Speed of each retraction step (default 0.3 mm/s).")
       ->check(NumberWithin(0.1, 20.0));
   c->add_option("--step-mm", a.loop.step_mm, "Retraction per step (default 0.2 mm).")->check(FiniteNumber());
