@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "scenarios/pressed_rig.h"
 #include "sensors/labels.h"
 #include "sim/simulation.h"
 
@@ -18,65 +19,6 @@ namespace tactip {
 namespace {
 
 constexpr double kSameRing = 1e-9;  // pins of one ring differ in radius (m, rad or r/a) by rounding only
-// Quintic smooth step 0 -> 1.
-double Smooth(double u) {
-  u = std::clamp(u, 0.0, 1.0);
-  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
-}
-
-// The contact rig compiled and pressed: the plate moves -x by gap + depth over 1 s and
-// settles; Step() then holds the press and drives the tangential servo, ReadContacts()
-// fills `contacts` (one per pin, culled pins never in contact).
-class PressedRig {
-  const CompiledModel model_;  // declared first: everything below is built from it
-  Simulation sim_;
-
- public:
-  PressedRig(const ContactRigSpec& spec, double depth_m)
-      : model_(CompiledModel::FromXml(BuildContactRig(spec))),
-        sim_(model_),
-        lattice(PinLattice::Build(spec.skin)),
-        n(static_cast<int>(lattice.size())),
-        contacts(static_cast<size_t>(n)),
-        slot_(static_cast<size_t>(model_.ngeom()), -1),
-        servo_x_(model_.ActuatorId(ContactRigNames::kServoNormal)),
-        servo_y_(model_.ActuatorId(ContactRigNames::kServoShear)),
-        qy_(model_.JointQposAdr(model_.JointId(ContactRigNames::kShear))),
-        press_(spec.gap_m + depth_m),
-        dt_(model_.timestep()) {
-    for (int i = 0; i < n; ++i) {
-      try {
-        slot_[model_.GeomId(SkinNames{}.PinGeom(i))] = i;
-      } catch (const ModelError&) {
-        // culled pin: cannot reach the plate
-      }
-    }
-    while (t < 1.3) Drive(press_ * Smooth(t / 1.0), 0.0);
-    ReadContacts();
-  }
-  /// One step with the press held and the plate's tangential target at y_target.
-  void Step(double y_target) { Drive(press_, y_target); }
-  void ReadContacts() { sim_.ReadContacts(slot_, contacts); }
-  /// Tangential plate position (m).
-  double PlateY() const { return sim_.Qpos(qy_); }
-
-  const PinLattice lattice;
-  const int n;
-  std::vector<GeomContact> contacts;
-  double t = 0.0;
-
- private:
-  void Drive(double x_target, double y_target) {
-    sim_.SetControl(servo_x_, -x_target);
-    sim_.SetControl(servo_y_, y_target);
-    sim_.Step();
-    t += dt_;
-  }
-  std::vector<int> slot_;
-  int servo_x_, servo_y_, qy_;
-  double press_, dt_;
-};
-
 // Tangential contact force on a pin, world y and z (the plate shears along y).
 std::array<double, 2> TangentialYZ(const GeomContact& c) {
   const double fn = c.force_world[0] * c.normal_world[0] + c.force_world[1] * c.normal_world[1] +
@@ -92,6 +34,7 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
   spec.skin.shear_damping_ratio = opts.shear_damping_ratio;
   spec.max_depth_m = opts.depth_mm * 1e-3;
   PressedRig rig(spec, spec.max_depth_m);
+  rig.Press();
   const SkinMechanics mech = SkinMechanics::From(spec.skin, rig.lattice.size());
   const int N = rig.n;
   const double mu = spec.contact.friction;
@@ -299,6 +242,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   CheckDomeSkin(spec.skin);
   spec.max_depth_m = opts.depth_mm * 1e-3;
   PressedRig rig(spec, spec.max_depth_m);
+  rig.Press();
   const PinLattice& lattice = rig.lattice;
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
   const int N = rig.n;
