@@ -33,6 +33,9 @@ struct SkinConfig {
   std::string ridge_shape = "sine"; ///< fingerprint: square (raised rings) or sine (continuous wave)
   int pins_per_ring = 6;            ///< fingerprint: ring k carries pins_per_ring * k pins
   double pattern_radius_mm = 20.0;  ///< fingerprint: arc radius of the outermost ring allowed
+  std::string marker_model = "gel"; ///< what moves the markers: gel (pins plus the gel's lateral flow) or pins
+  double gel_flow_depth_mm = 2.5;   ///< gel field: depth of the gel layer that carries the lateral flow
+  double gel_squeeze_mm = 0.5;      ///< gel field: indentation at which a pin's sideways squeeze saturates
 
   template <class V>
   void Visit(V& v) {
@@ -106,6 +109,22 @@ struct SkinConfig {
     v("pattern_radius_mm", pattern_radius_mm, "mm",
       "Fingerprint: arc radius of the outermost ring; rings sit at k * ridge_spacing_mm <= this.",
       Bounds::Closed(1.0, 60.0));
+    v("marker_model", marker_model, "",
+      "What moves the markers the cameras see. gel: each pin's body (MuJoCo) plus the gel's lateral flow - an "
+      "indented pin squeezes the incompressible gel sideways and the flow carries every marker outwards, so a "
+      "press moves all markers, the outer ring too, as on a real TacTip. pins: the pin bodies alone (the contact "
+      "dynamics are the same; only the markers differ). See README 'Marker kinematics: the gel field'.",
+      Choices{"gel", "pins"});
+    v("gel_flow_depth_mm", gel_flow_depth_mm, "mm",
+      "Gel field: depth of the gel layer under the skin that flows sideways with it (a squeezed volume V moves "
+      "the skin by V / (2 pi h s) at distance s). 2.5 mm, with gel_squeeze_mm 0.5, puts a flat press's marker "
+      "field within a factor 1.5 of a real 127-pin TacTip's at 2-4 mm (README).",
+      Bounds::Closed(0.1, 50.0));
+    v("gel_squeeze_mm", gel_squeeze_mm, "mm",
+      "Gel field: a pin indented by w squeezes a gel volume h tanh(w / h) per unit cell area sideways, h this "
+      "value; deeper indentation pushes the gel column towards the core instead. 0.5 mm gives the real TacTip's "
+      "steep rise by 1 mm and slow growth after (README).",
+      Bounds::Closed(0.01, 5.0));
   }
   /// Radius of the contact surface: the dome plus the ridges of a fingerprint pattern.
   double OuterRadiusMm() const;

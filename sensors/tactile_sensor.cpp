@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "models/skin.h"
 
@@ -78,7 +79,11 @@ TactileSensor::TactileSensor(const TactileSensorSpec& spec, const TactileSensorI
       valid_(n_),
       ext_valid_(n_),
       marker_shift_m_(n_),
-      normal_N_(n_) {}
+      normal_N_(n_) {
+  if (!spec.gel_field.empty() && spec.gel_field.n_pins() != n_) {
+    throw std::logic_error("TactileSensor: the gel field is built for another lattice");
+  }
+}
 
 void TactileSensor::Rest(const Simulation& sim) {
   pose_ = {sim.BodyPos(ids_.body), sim.BodyRot(ids_.body)};
@@ -110,15 +115,22 @@ const PinFrame& TactileSensor::Capture(const Simulation& sim, double time_s) {
 }
 
 void TactileSensor::CapturePins(const Simulation& sim) {
-  // Pin inner ends in the sensor frame, and their image positions. A fingerprint ridge
-  // rocks under its tangential contact force (quasi-statically, deflection f_t / k_rock at
-  // the contact point), which moves the inner marker the other way.
-  image_gain_px_m_ = 0.0;
+  // Pin inner ends in the sensor frame, as the pin bodies carry them.
+  marker_m_.resize(n_);
   for (int i = 0; i < n_; ++i) {
-    auto p = pose_.Point(sim.SitePos(ids_.pin_site[i]));
+    const auto p = pose_.Point(sim.SitePos(ids_.pin_site[i]));
     marker_shift_m_[i] = std::sqrt((p[0] - rest_marker_m_[i][0]) * (p[0] - rest_marker_m_[i][0]) +
                                    (p[1] - rest_marker_m_[i][1]) * (p[1] - rest_marker_m_[i][1]) +
                                    (p[2] - rest_marker_m_[i][2]) * (p[2] - rest_marker_m_[i][2]));
+    marker_m_[i] = p;
+  }
+  MoveMarkersWithGel();
+  // A fingerprint ridge rocks under its tangential contact force (quasi-statically,
+  // deflection f_t / k_rock at the contact point), which moves the inner marker the other
+  // way. Then the image positions.
+  image_gain_px_m_ = 0.0;
+  for (int i = 0; i < n_; ++i) {
+    auto& p = marker_m_[i];
     if (spec_.marker_rock_m_N > 0.0) {
       const auto fs = pose_.Vector(tangential_[i]);
       for (int k = 0; k < 3; ++k) p[k] -= spec_.marker_rock_m_N * fs[k];
@@ -135,6 +147,18 @@ void TactileSensor::CapturePins(const Simulation& sim) {
   prev_px_ = px_;
   reading_.pos_px = px_;
   reading_.valid = valid_;
+}
+
+void TactileSensor::MoveMarkersWithGel() {
+  // Each pin's inward displacement along the sensor axis (its gel column's compression)
+  // squeezes gel sideways; the flow moves every marker (GelField).
+  if (spec_.gel_field.empty()) return;
+  indentation_m_.resize(n_);
+  for (int i = 0; i < n_; ++i) indentation_m_[i] = rest_marker_m_[i][0] - marker_m_[i][0];
+  spec_.gel_field.Shifts(indentation_m_, gel_shift_m_);
+  for (int i = 0; i < n_; ++i) {
+    for (int k = 0; k < 3; ++k) marker_m_[i][k] += gel_shift_m_[i][k];
+  }
 }
 
 void TactileSensor::CaptureExternal(const Simulation& sim) {

@@ -12,6 +12,7 @@
 #include "detectors/pin_frame.h"
 #include "models/skin.h"
 #include "sensors/camera.h"
+#include "sensors/gel_field.h"
 #include "sensors/labels.h"
 #include "sensors/sensor_frame.h"
 #include "sim/simulation.h"
@@ -39,6 +40,7 @@ struct TactileSensorSpec {
   ExternalCameraConfig external;     ///< the external camera (records when enabled)
   LabelConfig labels;                ///< stick/slip labelling
   double marker_rock_m_N = 0.0;      ///< inner marker moves by -this * tangential contact force (ridge pivot)
+  GelField gel_field;                ///< the gel's lateral flow of the markers (empty: none)
   double apex_x_m = 0.0;             ///< dome apex in the sensor frame (m)
 };
 
@@ -93,6 +95,7 @@ class TactileSensor {
 
  private:
   void CapturePins(const Simulation& sim);
+  void MoveMarkersWithGel();
   void CaptureExternal(const Simulation& sim);
   void CaptureContacts();
   void FillFrame(double time_s);
@@ -114,6 +117,8 @@ class TactileSensor {
   // Per frame: pose, image positions and detections.
   SensorPose pose_;
   std::vector<std::array<double, 3>> rest_marker_m_;
+  std::vector<std::array<double, 3>> marker_m_, gel_shift_m_;
+  std::vector<double> indentation_m_;
   std::vector<float> px_, prev_px_, ext_px_, prev_ext_px_, clean_px_;
   std::vector<std::uint8_t> valid_, ext_valid_;
   double image_gain_px_m_ = 0.0;

@@ -13,14 +13,16 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kOffDropM = 10e-3;  // an object this far below its held position has left the skin
 
-// A TacTip's cameras, noise and labelling, and its ridge-rocking marker shift.
+// A TacTip's cameras, noise and labelling, its ridge-rocking marker shift and its gel field.
 TactileSensorSpec SensorSpec(const RailScenarioConfig& cfg, const std::string& name) {
   TactileSensorSpec spec;
   spec.name = name;
   spec.camera = cfg.sensor;
   spec.external = cfg.external;
   spec.labels = cfg.labels;
-  const SkinMechanics mech = SkinMechanics::From(cfg.skin, PinLattice::Build(cfg.skin));
+  const PinLattice lattice = PinLattice::Build(cfg.skin);
+  const SkinMechanics mech = SkinMechanics::From(cfg.skin, lattice);
+  spec.gel_field = GelField::Build(cfg.skin, lattice);
   if (cfg.skin.coupling == "membrane" && mech.k_rock_N_m > 0.0) {
     spec.marker_rock_m_N = mech.marker_rock_factor / mech.k_rock_N_m;
   }

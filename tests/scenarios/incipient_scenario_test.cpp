@@ -377,9 +377,12 @@ TEST_F(IncipientScenarioTest, V2MarkersTrackTheContactPointsBetterThanV1) {
   ASSERT_TRUE(std::isfinite(v2.tracking_error));
   EXPECT_LT(v2.tracking_error, v1.tracking_error);
   EXPECT_GT(v2.tracking_correlation, v1.tracking_correlation);
-  // A smooth skin's markers sit on rigid pins: they track the contact points exactly.
+  // A smooth skin's pins do not pivot: only the gel field (which moves the inner markers as
+  // the press relaxes, not the contact points) separates its markers from the contact
+  // points, far less than v1's ridges.
   const IncipientRunMetrics smooth = AnalyzeIncipientRun(Runs("smooth", 1).rec, IncipientParams{});
-  EXPECT_LT(smooth.tracking_error, 1e-3);
+  EXPECT_LT(smooth.tracking_error, 0.5 * v1.tracking_error);
+  EXPECT_GT(smooth.tracking_correlation, 0.5);
 }
 
 // ---- Storage ----------------------------------------------------------------------------

@@ -21,8 +21,9 @@ using testing::CliResult;
 using testing::Slurp;
 
 /// The fixture's job: two short runs of a 19-pin skin on acrylic with the external camera.
+/// The fixture predates the gel field (skin.marker_model): its markers are the pin bodies'.
 const char* kFixtureArgs =
-    "--runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
+    "--set skin.marker_model=pins --runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
     "--set sensor.frame_rate_hz=20 --set rail.lift_mm=5 --set rail.hold_s=0.1 --set rail.settle_s=0.1 "
     "--set rail.retract_speed_mm_s=5 --set rail.post_fall_s=0.1 --jobs 1 --quiet";
 
@@ -41,8 +42,16 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
   const DatasetReader old_file(kFixture), now(P("now.h5"));
   EXPECT_EQ(old_file.header().layout_version, 1);
   EXPECT_EQ(now.header().layout_version, 2);
-  // The same config; this version lists the scene's sensors too (the one default TacTip).
-  EXPECT_EQ(old_file.header().config_yaml + "sensors:\n  - name: \"tactip\"\n    offset_y_mm: 0\n", now.header().config_yaml);
+  // The same config; this version lists the scene's sensors too (the one default TacTip)
+  // and has the gel field's keys.
+  std::string now_yaml = now.header().config_yaml;
+  for (const std::string line :
+       {"  marker_model: \"pins\"\n", "  gel_flow_depth_mm: 2.5\n", "  gel_squeeze_mm: 0.5\n"}) {
+    const size_t at = now_yaml.find(line);
+    ASSERT_NE(at, std::string::npos) << line;
+    now_yaml.erase(at, line.size());
+  }
+  EXPECT_EQ(old_file.header().config_yaml + "sensors:\n  - name: \"tactip\"\n    offset_y_mm: 0\n", now_yaml);
   ASSERT_EQ(old_file.run_indices(), now.run_indices());
   for (const int k : now.run_indices()) {
     SCOPED_TRACE("run " + std::to_string(k));
