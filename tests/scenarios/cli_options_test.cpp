@@ -97,7 +97,7 @@ TEST_F(CliOptionsTest, ValidateRefusesAnUnknownCheckNamingTheKnownOnes) {
   for (const std::string args : {"validate contact nosuch", "validate nosuch"}) {
     const CliResult r = Run(args);
     EXPECT_EQ(r.code, 2) << args;
-    EXPECT_EQ(r.err, "tactip: what: unknown check 'nosuch'; the known checks are: contact (see --help)\n") << args;
+    EXPECT_EQ(r.err, "tactip: what: unknown check 'nosuch'; the known checks are: contact, markers (see --help)\n") << args;
   }
 }
 

@@ -1,5 +1,6 @@
 #include "scenarios/app/cli/study_commands.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
 #include "scenarios/contact_checks.h"
+#include "scenarios/marker_checks.h"
 #include "scenarios/incipient_report.h"
 #include "scenarios/slip_data.h"
 #include "scenarios/sweep.h"
@@ -88,6 +90,23 @@ int RunContactChecks(const ConfigArgs& c) {
   ok = RunDome(configured_dome, configured, "configured lattice") && ok;
   if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
   return ok ? 0 : 1;
+}
+
+// tactip validate markers: the flat-press marker field against a real TacTip's, for the
+// rail scene's skin, camera and contact (--config, --skin, --set as for generate).
+int RunMarkerCheck(const ConfigArgs& c) {
+  const RailScenarioConfig rail = RailFamily(FindScenario("rail")).Load(c.Source());
+  FlatPressOptions o;
+  o.rig.sim = rail.sim;
+  o.rig.skin = rail.skin;
+  o.rig.contact = rail.contact;
+  o.camera = rail.sensor;
+  const bool real_like = rail.skin.pattern == "smooth" && PinLattice::Build(rail.skin).size() == 127;
+  std::fprintf(stderr, "validate: pressing the skin onto a flat plate at 1, 2, 3 and 4 mm\n");
+  const FlatPressCheck check = RunFlatPressCheck(o);
+  std::printf("%s", FormatFlatPressCheck(check, real_like ? "" : "; the real figures are a 127-pin smooth TacTip's").c_str());
+  if (!check.ok) std::fprintf(stderr, "tactip: validation failed\n");
+  return check.ok ? 0 : 1;
 }
 
 // tactip report incipient: per-run figures of a dataset, optionally as CSV.
@@ -212,18 +231,29 @@ std::function<int()> AddStudyCommands(CLI::App& app, const std::atomic<bool>* st
   auto a = std::make_shared<StudyArgs>();
   auto* validate = app.add_subcommand(
       "validate", "Check the simulated contact against analytic anchors and print measured vs predicted.");
-  validate->add_option("what", a->validate_checks, "contact: the pin lattice against the brush model.")
+  validate
+      ->add_option("what", a->validate_checks,
+                   "contact: the pin lattice against the brush model and the dome's exact solution; markers: the "
+                   "flat-press marker field against a real TacTip's.")
       ->required()
       ->check(CLI::Validator(
           [](std::string& check) {
-            return check == "contact" ? std::string() : "unknown check '" + check + "'; the known checks are: contact";
+            return check == "contact" || check == "markers"
+                       ? std::string()
+                       : "unknown check '" + check + "'; the known checks are: contact, markers";
           },
-          "contact"));
+          "contact|markers"));
   a->config.Add(validate, false);
   auto* sweep = AddSweep(app, *a);
   auto* report = AddReport(app, *a);
   return [a, validate, sweep, report, stop]() -> int {
-    if (*validate) return RunContactChecks(a->config);
+    if (*validate) {
+      int rc = 0;
+      for (const std::string& check : a->validate_checks) {
+        rc = std::max(rc, check == "markers" ? RunMarkerCheck(a->config) : RunContactChecks(a->config));
+      }
+      return rc;
+    }
     if (*report) return RunReport(*a);
     if (*sweep) return RunSweepCommand(*a, stop);
     return -1;
