@@ -59,11 +59,12 @@ double ColinearFraction(const SensorRecord& sensor, size_t f, double pin_level_p
   return static_cast<double>(inside) / static_cast<double>(moving.size());
 }
 
-std::optional<GrossSignature> MeasureGrossSignature(const RunRecord& run, const SensorRecord& sensor) {
+std::optional<GrossSignature> MeasureGrossSignature(const RunRecord& run, const SensorRecord& sensor,
+                                                    double held_window_s) {
   const double onset_s = RunAttr(run, "gross_slip_onset_s");
   if (std::isnan(onset_s)) return std::nullopt;
   GrossSignature g;
-  g.noise = MeasureHeldNoise(run, sensor);
+  g.noise = MeasureHeldNoise(run, sensor, held_window_s);
   g.onset_frame = static_cast<int>(std::max<size_t>(1, FrameAt(run, onset_s)));
   const auto onset_frame = static_cast<size_t>(g.onset_frame);
   // Spike start and width against the held noise level; peaks unsmoothed and smoothed.

@@ -42,9 +42,11 @@ struct GrossSignature {
   double contact_lost_s = 0.0;
 };
 
-/// Measures the signature of sensor's recording of `run`; nullopt when the run has no
-/// gross-slip onset (the figures do not apply).
-std::optional<GrossSignature> MeasureGrossSignature(const RunRecord& run, const SensorRecord& sensor);
+/// Measures the signature of sensor's recording of `run`, the noise over the still window
+/// of `held_window_s` (MeasureHeldNoise); nullopt when the run has no gross-slip onset
+/// (the figures do not apply).
+std::optional<GrossSignature> MeasureGrossSignature(const RunRecord& run, const SensorRecord& sensor,
+                                                    double held_window_s = kHeldWindowS);
 
 /// The co-linear share at frame f for pins faster than `pin_level_px` (px/frame); NaN when
 /// no pin moves or their velocities cancel.

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "scenarios/run_signals.h"
+#include "sim/base/number_text.h"
+#include "sim/config.h"
 
 namespace tactip {
 
@@ -25,14 +27,26 @@ std::pair<double, double> MeanAndStd(const std::vector<double>& v) {
 
 }  // namespace
 
-HeldNoise MeasureHeldNoise(const RunRecord& run, const SensorRecord& sensor) {
+double HeldWindowS(const DatasetHeader& header) {
+  // Best effort: a config without a readable, positive rail.hold_s keeps the default.
+  try {
+    const FlatConfig config = FlattenYaml(header.config_yaml, "config_yaml");
+    const auto it = config.find("rail.hold_s");
+    double hold_s = 0.0;
+    if (it != config.end() && ParseWhole(it->second, hold_s) && hold_s > 0.0) return std::min(hold_s, kHeldWindowS);
+  } catch (const InputError&) {
+  }
+  return kHeldWindowS;
+}
+
+HeldNoise MeasureHeldNoise(const RunRecord& run, const SensorRecord& sensor, double window_s) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   HeldNoise h{0, kNaN, kNaN, kNaN, kNaN, kNaN};
   // The window's end: the retraction start, else just before the onset.
   double end_s = RunAttr(run, "retract_start_s");
   if (std::isnan(end_s)) end_s = RunAttr(run, "gross_slip_onset_s") - kHeldGapBeforeOnsetS;
   if (std::isnan(end_s)) return h;
-  const size_t first = std::max<size_t>(1, FrameAt(run, end_s - kHeldWindowS)), end = FrameAt(run, end_s);
+  const size_t first = std::max<size_t>(1, FrameAt(run, end_s - window_s)), end = FrameAt(run, end_s);
 
   // Per-frame mean speeds (unsmoothed and W = 5) and every pin's unsmoothed speed.
   std::vector<double> mean_speeds, mean_w5, pin_speeds;

@@ -6,8 +6,8 @@
 
 namespace tactip {
 
-/// How long before the reference time the still window starts (s): the rail protocol's
-/// default hold (rail.hold_s = 0.5 s) between the lift and the retraction.
+/// Longest still window (s): the rail protocol's default hold (rail.hold_s = 0.5 s)
+/// between the lift and the retraction.
 constexpr double kHeldWindowS = 0.5;
 /// Without retract_start_s the window ends this long before the gross-slip onset (s).
 constexpr double kHeldGapBeforeOnsetS = 0.1;
@@ -32,8 +32,13 @@ struct HeldNoise {
   double PinLevel() const { return pin_mean_px + kNoiseSigmas * pin_std_px; }
 };
 
-/// Measures HeldNoise over the kHeldWindowS before retract_start_s (or, without it, before
+/// The still window of a dataset's runs: its config's rail.hold_s (root attribute
+/// config_yaml) if shorter than kHeldWindowS, else kHeldWindowS (also when the config has
+/// no readable rail.hold_s), s.
+double HeldWindowS(const DatasetHeader& header);
+
+/// Measures HeldNoise over the `window_s` before retract_start_s (or, without it, before
 /// gross_slip_onset_s - kHeldGapBeforeOnsetS); all NaN when the run has neither.
-HeldNoise MeasureHeldNoise(const RunRecord& run, const SensorRecord& sensor);
+HeldNoise MeasureHeldNoise(const RunRecord& run, const SensorRecord& sensor, double window_s = kHeldWindowS);
 
 }  // namespace tactip

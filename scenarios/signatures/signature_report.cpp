@@ -13,15 +13,15 @@ int RunsNeeded(int runs, double share) { return static_cast<int>(std::ceil(share
 
 }  // namespace
 
-SignatureRun MeasureSignatures(const RunRecord& run, const SensorRecord& sensor, const IncipientParams& params) {
+SignatureRun MeasureSignatures(const RunRecord& run, const SensorRecord& sensor, const SignatureOptions& options) {
   SignatureRun s;
   s.run = run.index;
   s.speed_mm_s = RunAttr(run, "retract_speed_mm_s");
   const auto skin = sensor.text_attrs.find("skin_pattern");
   s.skin = skin == sensor.text_attrs.end() ? "" : skin->second;
   s.incipient_onset = !std::isnan(RunAttr(run, "incipient_onset_s"));
-  s.gross = MeasureGrossSignature(run, sensor);
-  s.incipient = MeasureIncipientSignature(run, sensor, params);
+  s.gross = MeasureGrossSignature(run, sensor, options.held_window_s);
+  s.incipient = MeasureIncipientSignature(run, sensor, options.detector);
   return s;
 }
 

@@ -24,8 +24,14 @@ struct SignatureRun {
   std::optional<IncipientSignature> incipient;  ///< fingerprint runs with a fall or an incipient onset
 };
 
-/// Measures both signatures of `sensor`'s recording of `run` (detector: `params`).
-SignatureRun MeasureSignatures(const RunRecord& run, const SensorRecord& sensor, const IncipientParams& params);
+/// What the signatures are measured with.
+struct SignatureOptions {
+  IncipientParams detector;              ///< the incipient detector (hardware values by default)
+  double held_window_s = kHeldWindowS;   ///< still window of the noise, s (HeldWindowS of the dataset)
+};
+
+/// Measures both signatures of `sensor`'s recording of `run`.
+SignatureRun MeasureSignatures(const RunRecord& run, const SensorRecord& sensor, const SignatureOptions& options);
 
 /// Runs meeting one acceptance threshold of issue 13 among the runs it applies to.
 struct AcceptanceCount {
@@ -53,8 +59,8 @@ SignatureAcceptance JudgeSignatures(const std::vector<SignatureRun>& runs);
 
 /// The per-run tables and the summary (median and range beside the hardware value and the
 /// acceptance), "n/a" where a figure does not apply and "none" where its event did not
-/// happen; `params` names the detector in the heading.
-std::string FormatSignatureReport(const std::vector<SignatureRun>& runs, const IncipientParams& params);
+/// happen; the headings name the options.
+std::string FormatSignatureReport(const std::vector<SignatureRun>& runs, const SignatureOptions& options);
 
 /// One CSV row per run (columns documented in the README); "n/a" / "none" as in the table.
 std::string SignatureCsv(const std::vector<SignatureRun>& runs);

@@ -76,9 +76,11 @@ std::string GrossRow(const SignatureRun& r, GrossColumns& c) {
 }
 
 // The gross-slip per-run table and summary.
-std::string GrossSection(const std::vector<SignatureRun>& runs, const AcceptanceCount& width) {
+std::string GrossSection(const std::vector<SignatureRun>& runs, const AcceptanceCount& width, double held_window_s) {
   if (width.runs == 0) return "gross slip: n/a (no run has a gross-slip onset)\n";
-  std::string out = fmt::format("gross slip: {} of {} runs have an onset\n", width.runs, runs.size());
+  std::string out = fmt::format(
+      "gross slip: {} of {} runs have an onset; noise over the {} s before the retraction, level = mean + {} std\n",
+      width.runs, runs.size(), held_window_s, kNoiseSigmas);
   out += fmt::format("{:>4} {:>6} {:>6} {:>8} {:>6} {:>6} {:>5} {:>6} {:>7} {:>7} {:>7} {:>7}\n", "run", "speed",
                      "noise", "noise_w5", "level", "width", ">=15", "peak", "peak_w5", "colin_0", "colin_5", "lost_s");
   GrossColumns c;
@@ -162,9 +164,9 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
 
 }  // namespace
 
-std::string FormatSignatureReport(const std::vector<SignatureRun>& runs, const IncipientParams& params) {
+std::string FormatSignatureReport(const std::vector<SignatureRun>& runs, const SignatureOptions& options) {
   const SignatureAcceptance a = JudgeSignatures(runs);
-  return GrossSection(runs, a.spike_width) + "\n" + IncipientSection(runs, a, params);
+  return GrossSection(runs, a.spike_width, options.held_window_s) + "\n" + IncipientSection(runs, a, options.detector);
 }
 
 }  // namespace tactip

@@ -110,6 +110,18 @@ TEST(GrossSignatureTest, SpikeStartsAtTheNextFrameWhenTheOnsetFrameIsStillStatic
   EXPECT_TRUE(std::isnan(g->contact_lost_s));  // never lost in the recording: "none"
 }
 
+TEST(GrossSignatureTest, StillWindowIsTheConfiguredHoldUpToHalfASecond) {
+  DatasetHeader h;
+  h.config_yaml = "rail:\n  hold_s: 0.1\n";
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), 0.1);
+  h.config_yaml = "rail:\n  hold_s: 2\n";
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), kHeldWindowS);
+  h.config_yaml = "rail: {}\n";
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), kHeldWindowS);
+  h.config_yaml = "rail: [\n";  // unreadable: the default
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), kHeldWindowS);
+}
+
 TEST(GrossSignatureTest, RunWithoutAnOnsetHasNoGrossSignature) {
   EXPECT_FALSE(MeasureGrossSignature(StillRun(50, 4), StillRun(50, 4).sensors[0]).has_value());
 }

@@ -93,12 +93,15 @@ int RunContactChecks(const ConfigArgs& c) {
 
 // tactip report signatures: the hardware slip signatures of every run, optionally as CSV.
 int RunSignatureReport(const StudyArgs& a, const DatasetReader& reader) {
+  SignatureOptions options;
+  options.detector = a.report_params;
+  options.held_window_s = HeldWindowS(reader.header());
   std::vector<SignatureRun> runs;
   for (int idx : reader.run_indices()) {
     const RunRecord run = reader.ReadRun(idx);
-    runs.push_back(MeasureSignatures(run, ChooseSensor(run, a.report_sensor, a.report_path), a.report_params));
+    runs.push_back(MeasureSignatures(run, ChooseSensor(run, a.report_sensor, a.report_path), options));
   }
-  std::printf("%s", FormatSignatureReport(runs, a.report_params).c_str());
+  std::printf("%s", FormatSignatureReport(runs, options).c_str());
   if (!a.report_csv.empty()) WriteFileAtomic(a.report_csv, SignatureCsv(runs));
   return 0;
 }
