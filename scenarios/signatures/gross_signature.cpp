@@ -1,5 +1,6 @@
 #include "scenarios/signatures/gross_signature.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
