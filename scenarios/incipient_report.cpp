@@ -6,22 +6,15 @@
 
 #include <fmt/format.h>
 
+#include "scenarios/incipient_signals.h"
+#include "scenarios/run_signals.h"
+
 namespace tactip {
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPeakWindowS = 0.3;  // gross-slip signal: peak within this long after the onset
-
-double Attr(const RunRecord& r, const char* key) {
-  const auto it = r.attrs.find(key);
-  return it == r.attrs.end() ? kNaN : it->second;
-}
-
-// First frame at or after time t (frames() if none).
-size_t FrameAt(const RunRecord& r, double t) {
-  return static_cast<size_t>(std::lower_bound(r.time.begin(), r.time.end(), t - 1e-9) - r.time.begin());
-}
 
 // Mean and sample standard deviation of the finite values.
 std::pair<double, double> MeanStd(const std::vector<double>& v) {
@@ -44,18 +37,15 @@ std::pair<double, double> MeanStd(const std::vector<double>& v) {
 IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& sensor, const IncipientParams& params) {
   IncipientRunMetrics m;
   m.run = r.index;
-  m.retract_start_s = Attr(r, "retract_start_s");
-  m.incipient_onset_s = Attr(r, "incipient_onset_s");
-  m.gross_onset_s = Attr(r, "gross_slip_onset_s");
-  m.fall_s = Attr(r, "object_fall_s");
+  m.retract_start_s = RunAttr(r, "retract_start_s");
+  m.incipient_onset_s = RunAttr(r, "incipient_onset_s");
+  m.gross_onset_s = RunAttr(r, "gross_slip_onset_s");
+  m.fall_s = RunAttr(r, "object_fall_s");
   m.lead_gross_s = m.gross_onset_s - m.incipient_onset_s;
   m.lead_fall_s = m.fall_s - m.incipient_onset_s;
-  m.pre_slip_fraction = Attr(r, "pre_slip_fraction");
+  m.pre_slip_fraction = RunAttr(r, "pre_slip_fraction");
   const size_t T = r.frames(), N = static_cast<size_t>(sensor.n_pins);
   const size_t f0 = std::isnan(m.retract_start_s) ? 0 : FrameAt(r, m.retract_start_s);
-  // Tracking window: the retraction up to kPeakWindowS after the fall (incipient phase and
-  // the gross-slip release).
-  const size_t f_end = std::isnan(m.fall_s) ? T : std::min(T, FrameAt(r, m.fall_s + kPeakWindowS) + 1);
   auto radius = [&](size_t i) {  // distance of pin i's marker from the sensor axis, at frame 0
     return std::hypot(sensor.pos_m[i * 3 + 1], sensor.pos_m[i * 3 + 2]);
   };
@@ -80,77 +70,19 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& 
 
   // Internal vs external tracking, in the sensor frame (no mirroring), displacements
   // since the retraction started, of the pins in contact then.
-  m.tracking_correlation = kNaN;
-  m.tracking_error = kNaN;
-  if (!sensor.external_m.empty() && f0 < T) {
-    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, se = 0, sn = 0;
-    long n = 0;
-    for (size_t f = f0; f < f_end; ++f) {
-      for (size_t i = 0; i < N; ++i) {
-        if (!sensor.pin_contact[f0 * N + i]) continue;
-        for (int k = 1; k <= 2; ++k) {
-          const double din = sensor.pos_m[(f * N + i) * 3 + k] - sensor.pos_m[(f0 * N + i) * 3 + k];
-          const double dex = sensor.external_m[(f * N + i) * 3 + k] - sensor.external_m[(f0 * N + i) * 3 + k];
-          sx += dex;
-          sy += din;
-          sxx += dex * dex;
-          syy += din * din;
-          sxy += dex * din;
-          se += (din - dex) * (din - dex);
-          sn += dex * dex;
-          ++n;
-        }
-      }
-    }
-    if (n > 1) {
-      const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
-      if (vx > 0 && vy > 0) m.tracking_correlation = cov / std::sqrt(vx * vy);
-      if (sn > 0) m.tracking_error = std::sqrt(se / sn);
-    }
-  }
+  const MarkerTracking tracking = TrackMarkers(r, sensor);
+  m.tracking_correlation = tracking.correlation;
+  m.tracking_error = tracking.error;
 
   // The incipient detector from the retraction on.
-  m.detector_alarm_s = kNaN;
-  IncipientDetector det(params);
-  PinFrame frame;
-  frame.pos_px.resize(static_cast<Eigen::Index>(N), 2);
-  frame.valid.resize(N);
-  for (size_t f = f0; f < T; ++f) {
-    frame.time_s = r.time[f];
-    for (size_t i = 0; i < N; ++i) {
-      frame.pos_px(static_cast<Eigen::Index>(i), 0) = sensor.pos_px[(f * N + i) * 2];
-      frame.pos_px(static_cast<Eigen::Index>(i), 1) = sensor.pos_px[(f * N + i) * 2 + 1];
-      frame.valid[i] = sensor.valid[f * N + i];
-    }
-    if (det.Update(frame).slip) {
-      m.detector_alarm_s = r.time[f];
-      break;
-    }
-  }
+  m.detector_alarm_s = FirstIncipientAlarmS(r, sensor, params, f0);
   m.detector_lead_fall_s = m.fall_s - m.detector_alarm_s;
   m.detected_before_fall = !std::isnan(m.detector_alarm_s) && (std::isnan(m.fall_s) || m.detector_alarm_s < m.fall_s);
   m.alarm_before_gross =
       !std::isnan(m.detector_alarm_s) && (std::isnan(m.gross_onset_s) || m.detector_alarm_s < m.gross_onset_s);
 
   // Gross-slip signal strength: peak mean pin speed (px/frame) just after the onset.
-  m.peak_speed_px = kNaN;
-  if (!std::isnan(m.gross_onset_s)) {
-    const size_t g0 = std::max<size_t>(1, FrameAt(r, m.gross_onset_s));
-    const size_t g1 = std::min(T, FrameAt(r, m.gross_onset_s + kPeakWindowS) + 1);
-    double peak = 0.0;
-    for (size_t f = g0; f < g1; ++f) {
-      double s = 0.0;
-      int n = 0;
-      for (size_t i = 0; i < N; ++i) {
-        if (!sensor.valid[f * N + i] || !sensor.valid[(f - 1) * N + i]) continue;
-        s += std::hypot(sensor.pos_px[(f * N + i) * 2] - sensor.pos_px[((f - 1) * N + i) * 2],
-                        sensor.pos_px[(f * N + i) * 2 + 1] - sensor.pos_px[((f - 1) * N + i) * 2 + 1]);
-        ++n;
-      }
-      if (n > 0) peak = std::max(peak, s / n);
-    }
-    m.peak_speed_px = peak;
-  }
+  m.peak_speed_px = std::isnan(m.gross_onset_s) ? kNaN : PeakMeanPinSpeedPx(r, sensor, m.gross_onset_s, kPeakWindowS);
   return m;
 }
 

@@ -148,6 +148,7 @@ TEST_F(DatasetRefusalCliTest, EveryReadingCommandRefusesADamagedDataset) {
         "detect --model " + P("t.model") + " --data " + data + " --out " + P("x.csv"),
         "detect incipient --data " + data + " --out " + P("x.csv"),
         "report incipient " + data + " --csv " + P("x.csv"),
+        "report signatures " + data + " --csv " + P("x.csv"),
     };
     for (const std::string& args : commands) {
       if (!d.seen_by_info && args.rfind("info ", 0) == 0) continue;

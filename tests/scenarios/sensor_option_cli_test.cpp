@@ -108,6 +108,11 @@ TEST_F(SensorOptionCliTest, SensorPicksWhosePinsADetectorSees) {
   EXPECT_EQ(e.code, 0) << e.err;
   const CliResult report = Run("report incipient " + P("d.h5") + " --sensor left");
   EXPECT_EQ(report.code, 0) << report.err;
+  // The signatures of "left": its pins move 2 px/frame from frame 31, after the onset at frame 30.
+  const CliResult signatures = Run("report signatures " + P("d.h5") + " --sensor left");
+  EXPECT_EQ(signatures.code, 0) << signatures.err;
+  EXPECT_NE(signatures.out.find("spike width, frames             29 [29, 29] (2 of 2 runs)"), std::string::npos)
+      << signatures.out;
 }
 
 TEST_F(SensorOptionCliTest, AnUnknownSensorGetsOneLineNamingTheKnownOnesAndWritesNothing) {
@@ -120,6 +125,7 @@ TEST_F(SensorOptionCliTest, AnUnknownSensorGetsOneLineNamingTheKnownOnesAndWrite
       "detect --model " + P("t.model") + " --data " + P("d.h5") + " --sensor right --out " + P("x.csv"),
       "detect incipient --data " + P("d.h5") + " --sensor right --out " + P("x.csv"),
       "report incipient " + P("d.h5") + " --sensor right --csv " + P("x.csv"),
+      "report signatures " + P("d.h5") + " --sensor right --csv " + P("x.csv"),
       "bench --dataset " + P("d.h5") + " --sensor right --out " + P("bench"),
   };
   for (const std::string& args : commands) {

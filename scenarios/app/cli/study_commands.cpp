@@ -13,6 +13,7 @@
 #include "scenarios/contact_checks.h"
 #include "scenarios/marker_checks.h"
 #include "scenarios/incipient_report.h"
+#include "scenarios/signatures/signature_report.h"
 #include "scenarios/slip_data.h"
 #include "scenarios/sweep.h"
 #include "sim/base/files.h"
@@ -109,12 +110,28 @@ int RunMarkerCheck(const ConfigArgs& c) {
   return check.ok ? 0 : 1;
 }
 
-// tactip report incipient: per-run figures of a dataset, optionally as CSV.
+// tactip report signatures: the hardware slip signatures of every run, optionally as CSV.
+int RunSignatureReport(const StudyArgs& a, const DatasetReader& reader) {
+  SignatureOptions options;
+  options.detector = a.report_params;
+  options.held_window_s = HeldWindowS(reader.header());
+  std::vector<SignatureRun> runs;
+  for (int idx : reader.run_indices()) {
+    const RunRecord run = reader.ReadRun(idx);
+    runs.push_back(MeasureSignatures(run, ChooseSensor(run, a.report_sensor, a.report_path), options));
+  }
+  std::printf("%s", FormatSignatureReport(runs, options).c_str());
+  if (!a.report_csv.empty()) WriteFileAtomic(a.report_csv, SignatureCsv(runs));
+  return 0;
+}
+
+// tactip report incipient|signatures: per-run figures of a dataset, optionally as CSV.
 int RunReport(const StudyArgs& a) {
   CheckOutputsAreNotInputs({{"--csv", a.report_csv}}, {{"FILE", a.report_path}});
   if (!a.report_csv.empty()) CheckWritableLocation(a.report_csv);
   CheckSensorOption(a.report_path, a.report_sensor);
   const DatasetReader reader(a.report_path);
+  if (a.report_what == "signatures") return RunSignatureReport(a, reader);
   std::vector<IncipientRunMetrics> metrics;
   for (int idx : reader.run_indices()) {
     const RunRecord run = reader.ReadRun(idx);
@@ -202,13 +219,17 @@ CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
   return c;
 }
 
-// Registers `tactip report incipient` and its options.
+// Registers `tactip report incipient|signatures` and their options.
 CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
   auto* c = app.add_subcommand("report",
-                               "Per-run incipient-slip figures of a dataset: ground-truth lead times, "
-                               "first-slipping pins, internal vs external tracking, and the incipient detector's "
-                               "alarms.");
-  c->add_option("what", a.report_what, "incipient")->required()->check(CLI::IsMember({"incipient"}));
+                               "Per-run figures of a dataset. incipient: ground-truth lead times, first-slipping "
+                               "pins, internal vs external tracking, and the incipient detector's alarms. "
+                               "signatures: the hardware's gross- and incipient-slip signatures (spike width and "
+                               "peak, co-linearity, contact loss, visibility, amplitudes, alarm lead, first-slipping "
+                               "sector, marker agreement) beside the real TacTip's values, with pass/fail.");
+  c->add_option("what", a.report_what, "incipient or signatures")
+      ->required()
+      ->check(CLI::IsMember({"incipient", "signatures"}));
   c->add_option("file", a.report_path, "HDF5 dataset written by 'tactip generate'.")
       ->required()
       ->check(NonEmpty("an HDF5 dataset"));

@@ -1,0 +1,43 @@
+#pragma once
+// The hardware's incipient-slip signature of one run (real-sensor.md section 3): when the
+// partial slip becomes visible to the camera, how strong it is, when the hardware
+// detector alarms, where slip starts, and how internal and external markers agree.
+
+#include <optional>
+#include <string>
+
+#include "detectors/incipient.h"
+#include "scenarios/signatures/slip_sectors.h"
+#include "sensors/dataset.h"
+
+namespace tactip {
+
+/// Incipient figures of a fingerprint-skin run with a fall or an incipient onset. The
+/// incipient window runs from the retraction start to the gross-slip onset (the fall
+/// without one). Times in s, speeds in px/frame; NaN = the event did not happen.
+struct IncipientSignature {
+  bool has_phase = false;      ///< the run has a ground-truth incipient_onset_s
+  bool has_external = false;   ///< the sensor has external markers
+  /// First frame of the window from which, for params.window consecutive frames, the
+  /// labelled-slipping pins' mean smoothed speed (window params.window) exceeds that of
+  /// the other pins (the bulk) by params.speed_thr_px.
+  double visible_s = 0.0;
+  double visible_lead_s = 0.0;  ///< object_fall_s - visible_s
+  /// Peak over the window of the labelled-slipping pins' mean speed, unsmoothed (W = 1)
+  /// and with a 5-frame moving average (W = 5); NaN without a phase.
+  double amplitude_w1_px = 0.0;
+  double amplitude_w5_px = 0.0;
+  double alarm_s = 0.0;         ///< first alarm of the detector (params) fed from the retraction start
+  double alarm_lead_s = 0.0;    ///< object_fall_s - alarm_s
+  SectorOrder sectors;          ///< first-slipping sector and the order, within the window
+  double tracking_correlation = 0.0;  ///< internal vs external displacements (TrackMarkers)
+};
+
+/// Measures the signature with the detector parameters `params` (the hardware's by
+/// default); nullopt when it does not apply: a smooth skin (sensor attribute skin_pattern
+/// not fingerprint-*) or neither object_fall_s nor incipient_onset_s. Throws InputError for
+/// bad params.
+std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run, const SensorRecord& sensor,
+                                                            const IncipientParams& params = {});
+
+}  // namespace tactip

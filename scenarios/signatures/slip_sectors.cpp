@@ -1,0 +1,80 @@
+#include "scenarios/signatures/slip_sectors.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace tactip {
+
+namespace {
+
+constexpr std::array<char, 4> kSectors = {'E', 'W', 'S', 'N'};
+
+// Centroid of the image positions at frame f of the pins in contact (of the valid pins if none).
+std::array<double, 2> ContactCentroid(const SensorRecord& sensor, size_t f) {
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  for (bool contact_only : {true, false}) {
+    double su = 0.0, sv = 0.0;
+    int count = 0;
+    for (size_t i = 0; i < n; ++i) {
+      if (contact_only ? !sensor.pin_contact[f * n + i] : !sensor.valid[f * n + i]) continue;
+      su += sensor.pos_px[(f * n + i) * 2];
+      sv += sensor.pos_px[(f * n + i) * 2 + 1];
+      ++count;
+    }
+    if (count > 0) return {su / count, sv / count};
+  }
+  return {0.0, 0.0};
+}
+
+}  // namespace
+
+bool SectorOrder::EastWestFirst() const {
+  return !first.empty() && first.find_first_of("SN") == std::string::npos;
+}
+
+char ImageSector(double du_px, double dv_px) {
+  if (du_px == 0.0 && dv_px == 0.0) return '-';
+  if (std::abs(du_px) >= std::abs(dv_px)) return du_px > 0.0 ? 'E' : 'W';
+  return dv_px > 0.0 ? 'S' : 'N';
+}
+
+SectorOrder OrderSlipSectors(const SensorRecord& sensor, size_t from_frame, size_t end_frame) {
+  SectorOrder out;
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  const size_t frames = n == 0 ? 0 : sensor.valid.size() / n;
+  if (from_frame >= frames) return out;
+  end_frame = std::min(end_frame, frames);
+  const auto centre = ContactCentroid(sensor, from_frame);
+  // Each sector's first frame with a slipping pin in contact.
+  constexpr size_t kNever = std::numeric_limits<size_t>::max();
+  std::array<size_t, kSectors.size()> first{kNever, kNever, kNever, kNever};
+  for (size_t i = 0; i < n; ++i) {
+    const char sector = ImageSector(sensor.pos_px[(from_frame * n + i) * 2] - centre[0],
+                                    sensor.pos_px[(from_frame * n + i) * 2 + 1] - centre[1]);
+    const auto k = static_cast<size_t>(std::find(kSectors.begin(), kSectors.end(), sector) - kSectors.begin());
+    if (k == kSectors.size()) continue;
+    for (size_t f = from_frame; f < std::min(end_frame, first[k]); ++f) {
+      if (sensor.pin_contact[f * n + i] && sensor.pin_slip[f * n + i]) {
+        first[k] = f;
+        break;
+      }
+    }
+  }
+  // Sectors by first frame (stable: E, W, S, N within a frame), then the text.
+  std::vector<size_t> slipped;
+  for (size_t k = 0; k < kSectors.size(); ++k) {
+    if (first[k] != kNever) slipped.push_back(k);
+  }
+  std::stable_sort(slipped.begin(), slipped.end(), [&](size_t a, size_t b) { return first[a] < first[b]; });
+  for (size_t j = 0; j < slipped.size(); ++j) {
+    if (j > 0) out.order += first[slipped[j]] == first[slipped[j - 1]] ? '=' : '<';
+    out.order += kSectors[slipped[j]];
+    if (first[slipped[j]] == first[slipped.front()]) out.first = out.order;
+  }
+  return out;
+}
+
+}  // namespace tactip

@@ -1,0 +1,322 @@
+// The slip-signature figures of `tactip report signatures` on small hand-built runs whose
+// answers are known: spike width, peak and co-linearity from the onset, contact loss,
+// incipient visibility, amplitudes and alarm, the first-slipping sector, the acceptance
+// counts and the n/a / none cells of the table and CSV.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "scenarios/signatures/signature_report.h"
+
+namespace tactip {
+namespace {
+
+constexpr double kFrameS = 0.01;        // 100 fps
+constexpr double kSpeedTol = 1e-4;      // px/frame: float positions of a few hundred px
+constexpr double kTimeTol = 1e-9;       // s: times are copied, not computed
+constexpr double kNoisePx = 0.28;       // the camera's per-coordinate noise
+constexpr unsigned kSeed = 13;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// A run of `frames` frames of `pins` still pins on a 10 px grid, all valid and in contact,
+/// with skin `skin`; retraction at frame 40.
+RunRecord StillRun(int frames, int pins, const std::string& skin = "smooth") {
+  RunRecord r;
+  SensorRecord s;
+  s.n_pins = pins;
+  for (int f = 0; f < frames; ++f) {
+    r.time.push_back(kFrameS * f);
+    for (int i = 0; i < pins; ++i) {
+      s.pos_px.push_back(static_cast<float>(300 + 10 * (i % 5)));
+      s.pos_px.push_back(static_cast<float>(200 + 10 * (i / 5)));
+    }
+  }
+  const auto tn = static_cast<size_t>(frames * pins);
+  s.valid.assign(tn, 1);
+  s.pin_contact.assign(tn, 1);
+  s.pin_slip.assign(tn, 0);
+  s.text_attrs["skin_pattern"] = skin;
+  r.sensors.push_back(s);
+  r.attrs["retract_start_s"] = 40 * kFrameS;
+  return r;
+}
+
+/// Moves pin `pin` by (du, dv) px per frame over frames [first, end) and keeps the offset.
+void MovePin(SensorRecord& s, int pin, int first, int end, double du, double dv) {
+  const int frames = static_cast<int>(s.valid.size()) / s.n_pins;
+  for (int f = first; f < frames; ++f) {
+    const int steps = std::min(f, end - 1) - first + 1;
+    s.pos_px[(f * s.n_pins + pin) * 2] += static_cast<float>(du * steps);
+    s.pos_px[(f * s.n_pins + pin) * 2 + 1] += static_cast<float>(dv * steps);
+  }
+}
+
+/// Adds the camera's Gaussian noise (fixed seed) to every position.
+void AddNoise(SensorRecord& s) {
+  std::mt19937 rng(kSeed);
+  std::normal_distribution<float> noise(0.0f, static_cast<float>(kNoisePx));
+  for (float& p : s.pos_px) p += noise(rng);
+}
+
+/// A gross-slip run: 20 noisy pins, onset at frame 100, every pin moving 1 px/frame down
+/// (+v) for exactly 17 frames from the onset frame, contact lost 12 frames after it.
+RunRecord GrossRun() {
+  RunRecord r = StillRun(160, 20);
+  r.attrs["gross_slip_onset_s"] = 100 * kFrameS - 0.004;  // between frames 99 and 100
+  SensorRecord& s = r.sensors[0];
+  for (int i = 0; i < s.n_pins; ++i) MovePin(s, i, 100, 117, 0.0, 1.0);
+  for (size_t k = 112 * 20; k < s.pin_contact.size(); ++k) s.pin_contact[k] = 0;
+  AddNoise(s);
+  return r;
+}
+
+TEST(GrossSignatureTest, SpikeOfSeventeenFramesAboveNoiseHasWidthSeventeen) {
+  const RunRecord r = GrossRun();
+  const auto g = MeasureGrossSignature(r, r.sensors[0]);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_EQ(g->onset_frame, 100);
+  EXPECT_EQ(g->spike_start_frame, 100);
+  EXPECT_EQ(g->spike_width_frames, 17);
+  // The held noise is the camera's: ~0.5 px/frame mean pin speed (1.77 sigma).
+  EXPECT_NEAR(g->noise.mean_speed_px, 1.77 * kNoisePx, 0.05);
+  EXPECT_LT(g->noise.mean_speed_w5_px, g->noise.mean_speed_px / 2);
+}
+
+TEST(GrossSignatureTest, AllPinsMovingTogetherAreCoLinearAndContactLossIsTimedFromTheOnset) {
+  const RunRecord r = GrossRun();
+  const auto g = MeasureGrossSignature(r, r.sensors[0]);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_DOUBLE_EQ(g->colinear_onset, 1.0);
+  EXPECT_DOUBLE_EQ(g->colinear_later, 1.0);
+  EXPECT_NEAR(g->contact_lost_s, 112 * kFrameS - (100 * kFrameS - 0.004), kTimeTol);
+  // The peaks: 1 px/frame plus noise unsmoothed; the smoothed one averages the noise out.
+  EXPECT_GT(g->spike_peak_px, 1.0);
+  EXPECT_NEAR(g->spike_peak_w5_px, 1.0, 0.2);
+}
+
+TEST(GrossSignatureTest, SpikeStartsAtTheNextFrameWhenTheOnsetFrameIsStillStatic) {
+  RunRecord r = StillRun(160, 20);
+  r.attrs["gross_slip_onset_s"] = 100 * kFrameS;
+  for (int i = 0; i < 20; ++i) MovePin(r.sensors[0], i, 101, 110, 1.0, 0.0);
+  const auto g = MeasureGrossSignature(r, r.sensors[0]);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_EQ(g->spike_start_frame, 101);
+  EXPECT_EQ(g->spike_width_frames, 9);
+  EXPECT_TRUE(std::isnan(g->contact_lost_s));  // never lost in the recording: "none"
+}
+
+TEST(GrossSignatureTest, StillWindowIsTheConfiguredHoldUpToHalfASecond) {
+  DatasetHeader h;
+  h.config_yaml = "rail:\n  hold_s: 0.1\n";
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), 0.1);
+  h.config_yaml = "rail:\n  hold_s: 2\n";
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), kHeldWindowS);
+  h.config_yaml = "rail: {}\n";
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), kHeldWindowS);
+  h.config_yaml = "rail: [\n";  // unreadable: the default
+  EXPECT_DOUBLE_EQ(HeldWindowS(h), kHeldWindowS);
+}
+
+TEST(GrossSignatureTest, RunWithoutAnOnsetHasNoGrossSignature) {
+  EXPECT_FALSE(MeasureGrossSignature(StillRun(50, 4), StillRun(50, 4).sensors[0]).has_value());
+}
+
+TEST(GrossSignatureTest, CoLinearShareCountsMovingPinsWithinThirtyDegreesOfTheirMeanDirection) {
+  RunRecord r = StillRun(3, 10);
+  for (int i = 0; i < 8; ++i) MovePin(r.sensors[0], i, 2, 3, 0.0, 2.0);
+  MovePin(r.sensors[0], 8, 2, 3, 2.0, 0.0);
+  MovePin(r.sensors[0], 9, 2, 3, -2.0, 0.0);
+  EXPECT_DOUBLE_EQ(ColinearFraction(r.sensors[0], 2, 0.5), 0.8);
+  EXPECT_TRUE(std::isnan(ColinearFraction(r.sensors[0], 1, 0.5)));  // nothing moves
+}
+
+/// Sensor of five pins: centre, east, west, south, north (image u right, v down).
+SensorRecord CompassSensor(int frames) {
+  RunRecord r = StillRun(frames, 5, "fingerprint-v2");
+  SensorRecord s = r.sensors[0];
+  const float offsets[5][2] = {{0, 0}, {50, 0}, {-50, 0}, {0, 50}, {0, -50}};
+  for (int f = 0; f < frames; ++f) {
+    for (int i = 0; i < 5; ++i) {
+      s.pos_px[(f * 5 + i) * 2] = 320 + offsets[i][0];
+      s.pos_px[(f * 5 + i) * 2 + 1] = 240 + offsets[i][1];
+    }
+  }
+  return s;
+}
+
+/// Labels pin `pin` slipping from frame `first` on.
+void SlipFrom(SensorRecord& s, int pin, int first) {
+  for (size_t f = static_cast<size_t>(first); f < s.pin_slip.size() / 5; ++f) s.pin_slip[f * 5 + pin] = 1;
+}
+
+TEST(SlipSectorsTest, EastFirstRunOrdersTheSectorsByTheirFirstSlippingPin) {
+  SensorRecord s = CompassSensor(30);
+  SlipFrom(s, 1, 10);  // east
+  SlipFrom(s, 2, 12);  // west
+  SlipFrom(s, 3, 15);  // south; north never slips
+  const SectorOrder o = OrderSlipSectors(s, 0, 30);
+  EXPECT_EQ(o.first, "E");
+  EXPECT_EQ(o.order, "E<W<S");
+  EXPECT_TRUE(o.EastWestFirst());
+}
+
+TEST(SlipSectorsTest, SectorsSlippingInTheSameFrameAreJoinedAndSouthFirstIsNotEastWest) {
+  SensorRecord s = CompassSensor(30);
+  SlipFrom(s, 3, 8);  // south
+  SlipFrom(s, 4, 8);  // north
+  SlipFrom(s, 1, 9);  // east
+  const SectorOrder o = OrderSlipSectors(s, 0, 30);
+  EXPECT_EQ(o.first, "S=N");
+  EXPECT_EQ(o.order, "S=N<E");
+  EXPECT_FALSE(o.EastWestFirst());
+  // Slip after the window's end is not counted.
+  EXPECT_EQ(OrderSlipSectors(s, 0, 8).order, "");
+}
+
+TEST(SlipSectorsTest, ImageSectorIsTheDominantAxisWithVDownBeingSouth) {
+  EXPECT_EQ(ImageSector(3, 1), 'E');
+  EXPECT_EQ(ImageSector(-3, 1), 'W');
+  EXPECT_EQ(ImageSector(1, 3), 'S');
+  EXPECT_EQ(ImageSector(1, -3), 'N');
+  EXPECT_EQ(ImageSector(2, 2), 'E');
+  EXPECT_EQ(ImageSector(0, 0), '-');
+}
+
+/// An incipient run: 20 noise-free fingerprint pins on a 5 x 4 grid; retraction at frame
+/// 40, the east column (pins 4, 9, 14, 19) labelled slipping from frame 60 and moving
+/// 0.6 px/frame east until gross slip at frame 140; the object falls at frame 145.
+RunRecord IncipientRun() {
+  RunRecord r = StillRun(160, 20, "fingerprint-v2");
+  r.attrs["incipient_onset_s"] = 60 * kFrameS;
+  r.attrs["gross_slip_onset_s"] = 140 * kFrameS;
+  r.attrs["object_fall_s"] = 145 * kFrameS;
+  SensorRecord& s = r.sensors[0];
+  for (int i = 4; i < 20; i += 5) {
+    MovePin(s, i, 60, 140, 0.6, 0.0);
+    for (int f = 60; f < 160; ++f) s.pin_slip[f * 20 + i] = 1;
+  }
+  return r;
+}
+
+TEST(IncipientSignatureTest, SlipBecomesVisibleOnceTheSmoothedExcessSpeedPassesTheThreshold) {
+  const RunRecord r = IncipientRun();
+  const auto s = MeasureIncipientSignature(r, r.sensors[0]);
+  ASSERT_TRUE(s.has_value());
+  // W = 5: the slipping pins' smoothed speed is 0.12 at frame 60, 0.24 > 0.2 from frame 61.
+  EXPECT_NEAR(s->visible_s, 61 * kFrameS, kTimeTol);
+  EXPECT_NEAR(s->visible_lead_s, 84 * kFrameS, kTimeTol);
+  EXPECT_NEAR(s->amplitude_w1_px, 0.6, kSpeedTol);
+  EXPECT_NEAR(s->amplitude_w5_px, 0.6, kSpeedTol);
+  // The detector's bulk includes the slipping pins until they join the set: excess 0.192
+  // at frame 61, 0.288 at frame 62, when its four pins meet I_thr = 4.
+  EXPECT_NEAR(s->alarm_s, 62 * kFrameS, kTimeTol);
+  EXPECT_NEAR(s->alarm_lead_s, 83 * kFrameS, kTimeTol);
+  EXPECT_EQ(s->sectors.first, "E");
+  EXPECT_TRUE(s->has_phase);
+  EXPECT_FALSE(s->has_external);
+  EXPECT_TRUE(std::isnan(s->tracking_correlation));
+}
+
+TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
+  RunRecord r = StillRun(160, 20, "fingerprint-v2");
+  r.attrs["incipient_onset_s"] = 60 * kFrameS;
+  r.attrs["object_fall_s"] = 145 * kFrameS;
+  for (int f = 60; f < 160; ++f) r.sensors[0].pin_slip[f * 20] = 1;
+  MovePin(r.sensors[0], 0, 60, 145, 0.1, 0.0);
+  const auto s = MeasureIncipientSignature(r, r.sensors[0]);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_TRUE(std::isnan(s->visible_s));
+  EXPECT_TRUE(std::isnan(s->visible_lead_s));
+  EXPECT_TRUE(std::isnan(s->alarm_s));
+}
+
+TEST(IncipientSignatureTest, SmoothSkinAndRunsWithoutFallOrOnsetHaveNoIncipientSignature) {
+  RunRecord smooth = IncipientRun();
+  smooth.sensors[0].text_attrs["skin_pattern"] = "smooth";
+  EXPECT_FALSE(MeasureIncipientSignature(smooth, smooth.sensors[0]).has_value());
+  const RunRecord still = StillRun(50, 4, "fingerprint-v1");
+  EXPECT_FALSE(MeasureIncipientSignature(still, still.sensors[0]).has_value());
+}
+
+/// A SignatureRun with only a gross signature of spike width `width`.
+SignatureRun GrossOnly(int width) {
+  SignatureRun r;
+  r.gross = GrossSignature{};
+  r.gross->spike_width_frames = width;
+  return r;
+}
+
+/// A SignatureRun with only an incipient signature of the given leads and first sector.
+SignatureRun IncipientOnly(double visible_lead_s, double alarm_lead_s, const std::string& first) {
+  SignatureRun r;
+  r.incipient = IncipientSignature{};
+  r.incipient->visible_lead_s = visible_lead_s;
+  r.incipient->alarm_lead_s = alarm_lead_s;
+  r.incipient->sectors.first = first;
+  return r;
+}
+
+TEST(SignatureAcceptanceTest, SpikeWidthNeedsFifteenFramesInEightyPercentOfRuns) {
+  std::vector<SignatureRun> runs = {GrossOnly(20), GrossOnly(16), GrossOnly(15), GrossOnly(14), GrossOnly(3)};
+  SignatureAcceptance a = JudgeSignatures(runs);
+  EXPECT_EQ(a.spike_width.passed, 3);
+  EXPECT_EQ(a.spike_width.runs, 5);
+  EXPECT_EQ(a.spike_width.min_passed, 4);
+  EXPECT_FALSE(a.spike_width.Pass());
+  runs[3] = GrossOnly(15);
+  EXPECT_TRUE(JudgeSignatures(runs).spike_width.Pass());
+  EXPECT_EQ(a.visible_lead.runs, 0);
+  EXPECT_FALSE(a.visible_lead.Pass());  // no run: nothing passes
+}
+
+TEST(SignatureAcceptanceTest, AlarmNeedsSeventeenOfTwentyAndVisibilityNinetyPercent) {
+  std::vector<SignatureRun> runs;
+  for (int i = 0; i < 20; ++i) runs.push_back(IncipientOnly(i < 18 ? 1.0 : kNaN, i < 17 ? 0.5 : 0.4, "E"));
+  SignatureAcceptance a = JudgeSignatures(runs);
+  EXPECT_EQ(a.alarm_lead.passed, 17);
+  EXPECT_EQ(a.alarm_lead.min_passed, 17);
+  EXPECT_TRUE(a.alarm_lead.Pass());
+  EXPECT_EQ(a.visible_lead.passed, 18);
+  EXPECT_EQ(a.visible_lead.min_passed, 18);
+  EXPECT_TRUE(a.visible_lead.Pass());
+  runs[0] = IncipientOnly(kNaN, kNaN, "S");
+  a = JudgeSignatures(runs);
+  EXPECT_FALSE(a.alarm_lead.Pass());
+  EXPECT_FALSE(a.visible_lead.Pass());
+  EXPECT_EQ(a.east_west_first.passed, 19);
+  EXPECT_EQ(a.east_west_first.min_passed, 11);
+}
+
+TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
+  const RunRecord gross = GrossRun();
+  RunRecord incipient = IncipientRun();
+  incipient.index = 1;
+  incipient.attrs.erase("gross_slip_onset_s");  // its window ends at the fall
+  const std::vector<SignatureRun> runs = {MeasureSignatures(gross, gross.sensors[0], {}),
+                                          MeasureSignatures(incipient, incipient.sensors[0], {})};
+  const std::string text = FormatSignatureReport(runs, {});
+  EXPECT_NE(text.find("internal/external correlation   n/a (no external markers)"), std::string::npos) << text;
+  EXPECT_NE(text.find("spike width, frames             17 [17, 17] (1 of 1 runs)"), std::string::npos) << text;
+  EXPECT_NE(text.find("E/W in most runs: 1/1, needs 1: PASS"), std::string::npos) << text;
+  const std::string csv = SignatureCsv(runs);
+  const std::string gross_row = csv.substr(csv.find('\n') + 1, csv.find('\n', csv.find('\n') + 1) - csv.find('\n'));
+  EXPECT_EQ(gross_row.substr(0, 15), "0,none,smooth,0") << csv;
+  EXPECT_NE(gross_row.find(",17,1,"), std::string::npos) << csv;
+  EXPECT_NE(gross_row.find(",n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n"), std::string::npos) << csv;
+}
+
+TEST(SignatureReportTest, DatasetWithoutOnsetsSaysSoForBothSections) {
+  const RunRecord still = StillRun(50, 4);
+  const std::string text = FormatSignatureReport({MeasureSignatures(still, still.sensors[0], {})}, {});
+  EXPECT_EQ(text,
+            "gross slip: n/a (no run has a gross-slip onset)\n\nincipient slip: n/a (no fingerprint-skin run with a "
+            "fall; hardware: a smooth skin shows no incipient slip); ground-truth incipient onset in 0 of 1 runs\n");
+}
+
+}  // namespace
+}  // namespace tactip
