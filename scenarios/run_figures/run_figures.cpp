@@ -41,8 +41,21 @@ std::string RunDescription(const RunRecord& run, const SensorRecord& s) {
   return out;
 }
 
-/// " (t = 4.086 s)" for an event time, "" when it did not happen.
-std::string At(double t) { return std::isnan(t) ? "" : fmt::format(" (t = {:.3f} s)", t); }
+/// "gross-slip onset 4.086 s, no incipient onset, object fall 4.110 s".
+std::string EventsText(const RunEvents& e) {
+  auto one = [](const char* name, double t) {
+    return std::isnan(t) ? fmt::format("no {}", name) : fmt::format("{} {:.3f} s", name, t);
+  };
+  return one("gross-slip onset", e.gross_slip_onset_s) + ", " + one("incipient onset", e.incipient_onset_s) + ", " +
+         one("object fall", e.object_fall_s);
+}
+
+/// "pin 0 centre, pin 25 mid radius, ...": the pins shown on their own.
+std::string PinRoles(const std::vector<ShownPin>& pins) {
+  std::string out;
+  for (const ShownPin& p : pins) out += fmt::format("{}pin {} {}", out.empty() ? "" : ", ", p.pin, p.role);
+  return out;
+}
 
 /// The quiver figure's title: the frames shown and why.
 std::string QuiverTitle(const QuiverFrames& q) {
@@ -91,10 +104,9 @@ void WriteRunFigures(const RunForFigures& r, const std::string& dir, bool draw,
   say("wrote " + events);
 
   // 1. Pin motion over time, events marked.
-  const RunEvents e = EventsOf(r.run);
-  write("run-motion", "motion", MotionCsv(r.run, s, RepresentativePins(s, r.centre)),
-        fmt::format("pin displacement and speed; gross slip{}, incipient{}, fall{}", At(e.gross_slip_onset_s),
-                    At(e.incipient_onset_s), At(e.object_fall_s)));
+  const std::vector<ShownPin> pins = RepresentativePins(s, r.centre);
+  write("run-motion", "motion", MotionCsv(r.run, s, pins),
+        "pin displacement and speed (" + PinRoles(pins) + "); " + EventsText(EventsOf(r.run)));
   // 2. Pin velocities around the onset.
   const QuiverFrames q = ChooseQuiverFrames(r.run, s);
   write("run-quiver", "quiver", QuiverCsv(r.run, s, q), QuiverTitle(q));

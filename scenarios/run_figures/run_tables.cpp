@@ -88,7 +88,7 @@ std::string EventsCsv(const RunRecord& run) {
   return out;
 }
 
-std::vector<int> RepresentativePins(const SensorRecord& s, const ImageCentre& centre) {
+std::vector<ShownPin> RepresentativePins(const SensorRecord& s, const ImageCentre& centre) {
   const auto n = static_cast<size_t>(s.n_pins);
   const size_t t = n == 0 ? 0 : s.pos_px.size() / (2 * n);
   // Rest radii and peak displacements, per pin.
@@ -105,25 +105,30 @@ std::vector<int> RepresentativePins(const SensorRecord& s, const ImageCentre& ce
   }
   const auto outer = static_cast<size_t>(std::max_element(radius.begin(), radius.end()) - radius.begin());
   const auto moving = static_cast<size_t>(std::max_element(peak.begin(), peak.end()) - peak.begin());
-  std::vector<int> pins;
-  for (size_t i : {size_t{0}, mid, outer, moving}) {
-    if (i < n && std::find(pins.begin(), pins.end(), static_cast<int>(i)) == pins.end()) {
-      pins.push_back(static_cast<int>(i));
+  std::vector<ShownPin> pins;
+  for (const auto& [i, role] : {std::pair{size_t{0}, "centre"}, std::pair{mid, "mid radius"},
+                                std::pair{outer, "outermost"}, std::pair{moving, "farthest moving"}}) {
+    if (i >= n) continue;
+    const auto same = std::find_if(pins.begin(), pins.end(), [&](const ShownPin& p) { return p.pin == int(i); });
+    if (same == pins.end()) {
+      pins.push_back({static_cast<int>(i), role});
+    } else {
+      same->role += std::string(" and ") + role;
     }
   }
   return pins;
 }
 
-std::string MotionCsv(const RunRecord& run, const SensorRecord& s, const std::vector<int>& pins) {
+std::string MotionCsv(const RunRecord& run, const SensorRecord& s, const std::vector<ShownPin>& pins) {
   const auto n = static_cast<size_t>(s.n_pins);
   // Header: one displacement column per representative pin.
   std::string out = "frame,time_s,mean_disp_px";
-  for (int p : pins) out += fmt::format(",pin{}_disp_px", p);
+  for (const ShownPin& p : pins) out += fmt::format(",pin{}_disp_px", p.pin);
   out += ",mean_speed_px_frame,max_speed_px_frame,gross_slip,incipient\n";
   // Rows: displacement from frame 0, speed from the previous frame.
   for (size_t f = 0; f < run.frames(); ++f) {
     out += fmt::format("{},{},{}", f, Cell(run.time[f]), Cell(MeanDistance(s.pos_px, n, f, 0)));
-    for (int p : pins) out += "," + Cell(Distance(s.pos_px, n, f, 0, static_cast<size_t>(p)));
+    for (const ShownPin& p : pins) out += "," + Cell(Distance(s.pos_px, n, f, 0, static_cast<size_t>(p.pin)));
     double mean = kNaN, max = kNaN;
     if (f > 0) {
       mean = MeanDistance(s.pos_px, n, f, f - 1);

@@ -49,16 +49,22 @@ RunEvents EventsOf(const RunRecord& run);
 /// (frame = first frame at or after the time; both cells empty when it did not happen).
 std::string EventsCsv(const RunRecord& run);
 
+/// A pin shown on its own on the motion figure, and why.
+struct ShownPin {
+  int pin = 0;       ///< pin index
+  std::string role;  ///< "centre", "mid radius", "outermost", "farthest moving" (joined by " and " if several)
+};
+
 /// Pins shown one by one on the motion figure: the centre pin (0), the pin nearest half the
-/// largest rest radius, the outermost pin and the pin that moves farthest (each once, in
-/// that order). Rest radius from frame 0's image positions around `centre`.
-std::vector<int> RepresentativePins(const SensorRecord& s, const ImageCentre& centre);
+/// largest rest radius, the outermost pin and the pin that moves farthest from frame 0 (each
+/// once, in that order). Rest radius from frame 0's image positions around `centre`.
+std::vector<ShownPin> RepresentativePins(const SensorRecord& s, const ImageCentre& centre);
 
 /// motion.csv, one row per frame: `frame,time_s,mean_disp_px,pinK_disp_px` (one column
 /// per pin of `pins`), `mean_speed_px_frame,max_speed_px_frame,gross_slip,incipient`.
 /// Displacement: |pos_px(f) − pos_px(0)|; speed: |pos_px(f) − pos_px(f−1)|, empty at frame 0;
 /// mean and max over all pins.
-std::string MotionCsv(const RunRecord& run, const SensorRecord& s, const std::vector<int>& pins);
+std::string MotionCsv(const RunRecord& run, const SensorRecord& s, const std::vector<ShownPin>& pins);
 
 /// The quiver frames around the gross-slip onset, else the incipient onset, else the frame
 /// of the largest mean pin speed. Throws InputError if the run has fewer than 2 frames.

@@ -77,13 +77,20 @@ def flag(text):
     return not math.isnan(v) and v != 0.0
 
 
-def save_png(fig, out, dpi=DPI):
-    """Renders `fig` to memory at `dpi`, then writes `out` atomically."""
+def save_png(fig, out, dpi=DPI, palette=False):
+    """Renders `fig` to memory at `dpi` (with `palette`: as 256 colours, through Pillow, which
+    Debian's matplotlib depends on), then writes `out` atomically."""
     folder = os.path.dirname(out) or "."
     if not os.path.isdir(folder):
         raise InputProblem(f"cannot write '{out}': folder '{folder}' does not exist")
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=dpi)
+    if palette:
+        from PIL import Image
+        small = io.BytesIO()
+        Image.open(io.BytesIO(buf.getvalue())).convert("RGB").quantize(colors=256).save(small, format="png",
+                                                                                        optimize=True)
+        buf = small
     tmp = f"{out}.tmp.{os.getpid()}"
     try:
         with open(tmp, "wb") as f:
@@ -378,7 +385,7 @@ def cmd_pareto(a):
 EVENT_STYLES = [("gross_slip_onset", "gross-slip onset", "tab:red", "-"),
                 ("incipient_onset", "incipient onset", "darkorange", "--"),
                 ("object_fall", "object fall", "black", ":")]
-RUN_FIG_DPI = 100  # the run figures are committed to the README's gallery: kept small
+RUN_FIG_DPI = 100  # the run figures are committed to the README's gallery: kept small (and 256 colours)
 
 
 def read_events(path):
@@ -396,35 +403,63 @@ def mark_events(ax, events):
             ax.axvline(events[name], color=colour, ls=style, lw=1.2, label=f"{text} {events[name]:.3f} s")
 
 
+def run_title(fig, text, width_in):
+    """The figure title, each line wrapped to the figure's width (~0.075 in per character)."""
+    lines = [textwrap.fill(line, max(40, int(width_in / 0.075))) for line in text.split("\n")]
+    fig.suptitle("\n".join(lines), fontsize=9)
+
+
 def column(rows, col):
     """A numeric column as a list (NaN for empty cells)."""
     return [number(r[col]) for r in rows]
+
+
+def zoom_window(events, t):
+    """(start, end) of the time around the onsets and the fall (0.5 s before the first, 0.3 s
+    after the last), or None when no event happened or the window is the whole run."""
+    times = list(events.values())
+    if not times:
+        return None
+    lo, hi = max(min(times) - 0.5, t[0]), min(max(times) + 0.3, t[-1])
+    return (lo, hi) if hi > lo and (lo > t[0] or hi < t[-1]) else None
+
+
+def draw_speeds(ax, rows, t):
+    """Mean and max pin speed over time."""
+    ax.plot(t, column(rows, "max_speed_px_frame"), color="tab:purple", lw=0.8, alpha=0.7, label="max over pins")
+    ax.plot(t, column(rows, "mean_speed_px_frame"), color="black", lw=1.2, label="mean over pins")
+    ax.set_ylabel("pin speed (px/frame)")
 
 
 def cmd_run_motion(a):
     rows = read_csv(a.csv, ["time_s", "mean_disp_px", "mean_speed_px_frame", "max_speed_px_frame"])
     pins = [c for c in rows[0].keys() if c.startswith("pin") and c.endswith("_disp_px")]
     events = read_events(a.events)
-    plt = pyplot()
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6.4), sharex=True, layout="constrained")
     t = column(rows, "time_s")
+    zoom = zoom_window(events, t)
+    plt = pyplot()
+    fig, axes = plt.subplots(3 if zoom else 2, 1, figsize=(8, 8.4 if zoom else 6.4), layout="constrained")
 
     # Displacement from the first frame: a few pins and the mean over all.
+    top = axes[0]
     for c in pins:
         top.plot(t, column(rows, c), lw=0.8, alpha=0.8, label="pin " + c[3:-len("_disp_px")])
     top.plot(t, column(rows, "mean_disp_px"), color="black", lw=1.6, label="mean over pins")
     top.set_ylabel("displacement from first frame (px)")
-    # Speed: mean and max over pins, frame to frame.
-    bottom.plot(t, column(rows, "max_speed_px_frame"), color="tab:purple", lw=0.8, alpha=0.7, label="max over pins")
-    bottom.plot(t, column(rows, "mean_speed_px_frame"), color="black", lw=1.2, label="mean over pins")
-    bottom.set_ylabel("pin speed (px/frame)")
-    bottom.set_xlabel("time (s)")
-    for ax in (top, bottom):
+    # Speed over the run, then (when there are events) around them, frame by frame.
+    draw_speeds(axes[1], rows, t)
+    if zoom:
+        draw_speeds(axes[2], rows, t)
+        axes[2].plot(t, column(rows, "mean_speed_px_frame"), "k.", ms=3)
+        axes[2].set_xlim(*zoom)
+        axes[2].set_title("around the events (dots: frames)", fontsize=8)
+    for ax in axes:
         mark_events(ax, events)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="upper left", ncol=2)
-    fig.suptitle(a.title, fontsize=9)
-    save_png(fig, a.out, RUN_FIG_DPI)
+        ax.set_xlabel("time (s)")
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
 
 
 def quiver_scale(rows, span):
@@ -449,7 +484,7 @@ def cmd_run_quiver(a):
     us, vs = column(rows, "u_px"), column(rows, "v_px")
     span = max(max(us) - min(us), max(vs) - min(vs), 1.0)
     gain, ref = quiver_scale(rows, span)
-    fig, axes = plt.subplots(1, len(panels), figsize=(4.0 * len(panels), 4.4), layout="constrained", squeeze=False)
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.0 * len(panels), 5.0), layout="constrained", squeeze=False)
     for ax, panel in zip(axes[0], panels):
         sel = [r for r in rows if r["panel"] == panel]
         u, v = column(sel, "u_px"), column(sel, "v_px")
@@ -462,15 +497,16 @@ def cmd_run_quiver(a):
         mean = sum(math.hypot(x, y) for x, y in zip(du, dv)) / len(sel)
         ax.set_title(f"{panel}: t = {number(sel[0]['time_s']):.3f} s (frame {sel[0]['frame']})\n"
                      f"mean speed {mean:.2f} px/frame, {sum(touching)} pins in contact", fontsize=8)
-        ax.quiverkey(q, 0.78, -0.06, ref * gain, f"{ref:g} px/frame", labelpos="E", fontproperties={"size": 7})
+        ax.quiverkey(q, 0.72, 0.04, ref * gain, f"{ref:g} px/frame", labelpos="E", coordinates="axes",
+                     fontproperties={"size": 7})  # in the corner the pattern leaves free
         ax.set_aspect("equal")
         ax.set_xlim(min(us) - 0.1 * span, max(us) + 0.1 * span)
         ax.set_ylim(max(vs) + 0.1 * span, min(vs) - 0.1 * span)  # image v grows downwards
         ax.set_xlabel("u (px)", fontsize=8)
         ax.tick_params(labelsize=7)
     axes[0][0].set_ylabel("v (px)", fontsize=8)
-    fig.suptitle(a.title, fontsize=9)
-    save_png(fig, a.out, RUN_FIG_DPI)
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
 
 
 def correlation(xs, ys):
@@ -500,13 +536,13 @@ def cmd_run_markers(a):
     bottom.plot(t, se, color="tab:green", lw=1.0, alpha=0.8, label="external markers")
     bottom.set_ylabel("mean speed (px/frame)")
     bottom.set_xlabel("time (s)")
-    bottom.set_title(f"correlation of the mean speeds: {correlation(si, se):.2f}", fontsize=8)
+    bottom.set_title(f"correlation of the two mean speeds over the run: {correlation(si, se):.2f}", fontsize=8)
     for ax in (top, bottom):
         mark_events(ax, events)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="upper left")
-    fig.suptitle(a.title, fontsize=9)
-    save_png(fig, a.out, RUN_FIG_DPI)
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
 
 
 def cmd_run_indentation(a):
@@ -527,8 +563,8 @@ def cmd_run_indentation(a):
         ax.set_ylabel(label)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7)
-    fig.suptitle(a.title, fontsize=9)
-    save_png(fig, a.out, RUN_FIG_DPI)
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
 
 
 # ------------------------------------------------------------------ command line
