@@ -84,6 +84,14 @@ RunForFigures ReadRunForFigures(const std::string& path, int index, const std::s
   return r;
 }
 
+std::vector<std::string> RunFigureFiles() {
+  std::vector<std::string> names = {"events.csv"};
+  for (const char* figure : {"motion", "quiver", "markers", "indentation"}) {
+    names.insert(names.end(), {std::string(figure) + ".csv", std::string(figure) + ".png"});
+  }
+  return names;
+}
+
 void WriteRunFigures(const RunForFigures& r, const std::string& dir, bool draw,
                      const std::function<void(const std::string&)>& say) {
   const SensorRecord& s = *r.run.FindSensor(r.sensor);

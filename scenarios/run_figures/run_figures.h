@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "scenarios/run_figures/run_tables.h"
 #include "sensors/dataset.h"
@@ -24,6 +25,9 @@ struct RunForFigures {
 /// only after both checks. The principal point is the stored config's sensor.cx_px /
 /// sensor.cy_px, else pin 0's first image position.
 RunForFigures ReadRunForFigures(const std::string& path, int index, const std::string& sensor);
+
+/// Names of every file WriteRunFigures may write into its folder.
+std::vector<std::string> RunFigureFiles();
 
 /// Writes the run's figure tables into the existing folder `dir` — events.csv, motion.csv,
 /// quiver.csv, markers.csv (only with external markers), indentation.csv — and, when

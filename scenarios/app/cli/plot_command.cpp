@@ -19,6 +19,9 @@ namespace tactip::cli {
 
 namespace {
 
+/// Largest --run accepted by the parser (run groups are run_NNNN; the file says which exist).
+constexpr int kMaxRunIndex = 999999999;
+
 struct PlotArgs {
   std::string dataset;  ///< FILE.h5
   int run = 0;          ///< --run K
@@ -27,9 +30,13 @@ struct PlotArgs {
   bool no_plots = false;
 };
 
-// Refuses an output folder that is the input, or an existing file that is not a folder.
+// Refuses an output folder that is the input or holds it under a name written there, or an
+// existing file that is not a folder.
 void CheckOutputFolder(const PlotArgs& a) {
-  CheckOutputsAreNotInputs({{"--out", a.out}}, {{"FILE", a.dataset}});
+  if (SameFile(a.out, a.dataset)) {
+    throw InputError(fmt::format("--out '{}' is the input dataset FILE: give a folder for the figures", a.out));
+  }
+  CheckOutputsAreNotInputs(FilesInFolder("--out", a.out, RunFigureFiles()), {{"FILE", a.dataset}});
   std::error_code ec;
   const auto status = std::filesystem::status(a.out, ec);
   if (std::filesystem::exists(status) && !std::filesystem::is_directory(status)) {
@@ -64,7 +71,7 @@ std::function<int()> AddPlotCommand(CLI::App& app) {
   c->add_option("FILE", a->dataset, "Dataset (HDF5) written by 'tactip generate'.")
       ->required()
       ->check(NonEmpty("a dataset file"));
-  c->add_option("--run", a->run, "Run index (see 'tactip info').")->required()->check(CLI::NonNegativeNumber);
+  c->add_option("--run", a->run, "Run index (see 'tactip info').")->required()->check(CLI::Range(0, kMaxRunIndex));
   c->add_option("--out", a->out, "Folder for the CSVs and PNGs (created if missing; files in it are replaced).")
       ->required()
       ->check(NonEmpty("a folder"));
