@@ -70,7 +70,7 @@ void PlotPareto(const ParetoPlot& p);
 /// from `csv` and the run's events (see README "Figures of one run").
 struct RunFigurePlot {
   std::string kind;        ///< run-motion, run-quiver, run-markers or run-indentation
-  std::string csv;         ///< the figure's table (RunFigureTables' CSVs)
+  std::string csv;         ///< the figure's table (see run_figures/run_tables.h)
   std::string events_csv;  ///< events.csv: onsets and fall drawn as vertical lines ("" for none)
   std::string title;       ///< figure title
   std::string out_png;     ///< PNG written atomically (nothing on failure)

@@ -103,10 +103,11 @@ std::vector<ShownPin> RepresentativePins(const SensorRecord& s, const ImageCentr
   for (size_t i = 0; i < n; ++i) {
     if (std::abs(radius[i] - 0.5 * r_max) < std::abs(radius[mid] - 0.5 * r_max)) mid = i;
   }
+  const auto inner = static_cast<size_t>(std::min_element(radius.begin(), radius.end()) - radius.begin());
   const auto outer = static_cast<size_t>(std::max_element(radius.begin(), radius.end()) - radius.begin());
   const auto moving = static_cast<size_t>(std::max_element(peak.begin(), peak.end()) - peak.begin());
   std::vector<ShownPin> pins;
-  for (const auto& [i, role] : {std::pair{size_t{0}, "centre"}, std::pair{mid, "mid radius"},
+  for (const auto& [i, role] : {std::pair{inner, "centre"}, std::pair{mid, "mid radius"},
                                 std::pair{outer, "outermost"}, std::pair{moving, "farthest moving"}}) {
     if (i >= n) continue;
     const auto same = std::find_if(pins.begin(), pins.end(), [&](const ShownPin& p) { return p.pin == int(i); });
@@ -161,7 +162,10 @@ QuiverFrames ChooseQuiverFrames(const RunRecord& run, const SensorRecord& s) {
     double best = -1.0;
     for (int f = 1; f < t; ++f) {
       const double v = MeanDistance(s.pos_px, n, static_cast<size_t>(f), static_cast<size_t>(f - 1));
-      if (v > best) best = v, q.at = f;
+      if (v > best) {
+        best = v;
+        q.at = f;
+      }
     }
     q.onset_name = "peak mean pin speed";
     q.onset_s = run.time[static_cast<size_t>(q.at)];
@@ -207,12 +211,18 @@ ChosenFrame DeepestPressFrame(const RunRecord& run, const SensorRecord& s) {
   std::string reason = "deepest press of the run (no onset)";
   for (double t : {e.gross_slip_onset_s, e.incipient_onset_s}) {
     const int f = FrameAtOrAfter(run, t);
-    if (f > 0 && f < end) end = f, reason = "deepest press before the onset";
+    if (f > 0 && f < end) {
+      end = f;
+      reason = "deepest press before the onset";
+    }
   }
   ChosenFrame c;
   double best = -std::numeric_limits<double>::infinity();
   for (int f = 0; f < end; ++f) {
-    if (const double in = MeanInward(s, static_cast<size_t>(f)); in > best) best = in, c.frame = f;
+    if (const double in = MeanInward(s, static_cast<size_t>(f)); in > best) {
+      best = in;
+      c.frame = f;
+    }
   }
   c.time_s = run.time[static_cast<size_t>(c.frame)];
   c.reason = reason;

@@ -55,9 +55,10 @@ struct ShownPin {
   std::string role;  ///< "centre", "mid radius", "outermost", "farthest moving" (joined by " and " if several)
 };
 
-/// Pins shown one by one on the motion figure: the centre pin (0), the pin nearest half the
+/// Pins shown one by one on the motion figure: the pin nearest the centre, the pin nearest half the
 /// largest rest radius, the outermost pin and the pin that moves farthest from frame 0 (each
-/// once, in that order). Rest radius from frame 0's image positions around `centre`.
+/// once, in that order; the first index wins ties). Rest radius from frame 0's image
+/// positions around `centre`.
 std::vector<ShownPin> RepresentativePins(const SensorRecord& s, const ImageCentre& centre);
 
 /// motion.csv, one row per frame: `frame,time_s,mean_disp_px,pinK_disp_px` (one column
