@@ -147,6 +147,7 @@ TEST_F(PlotRunCliTest, BadInputIsRefusedInOneLineWithNothingWritten) {
   ExpectRefused("plot " + P("rail.h5") + " --run 0 --out " + P("acrylic.h5"),
                 "--out '" + P("acrylic.h5") + "' is an existing file, not a folder", out);
   ExpectRefused("plot " + P("rail.h5") + " --run -1 --out " + out, "--run: Value -1 not in range", out);
+  ExpectRefused("plot " + P("rail.h5") + " --run 0 --out ''", "--out: empty; give a folder", out);
 }
 
 }  // namespace

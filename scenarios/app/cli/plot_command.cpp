@@ -22,6 +22,7 @@ namespace {
 /// Largest --run accepted by the parser (run groups are run_NNNN; the file says which exist).
 constexpr int kMaxRunIndex = 999999999;
 
+/// The options of `tactip plot`.
 struct PlotArgs {
   std::string dataset;  ///< FILE.h5
   int run = 0;          ///< --run K
