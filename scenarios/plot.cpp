@@ -126,6 +126,12 @@ void PlotPareto(const ParetoPlot& p) {
   Draw(args, p.out_png);
 }
 
+void PlotRunFigure(const RunFigurePlot& p) {
+  std::vector<std::string> args = {p.kind, p.csv, "--title", p.title, "--out", p.out_png};
+  if (!p.events_csv.empty()) args.insert(args.end(), {"--events", p.events_csv});
+  Draw(args, p.out_png);
+}
+
 std::vector<std::pair<std::string, std::vector<std::string>>> ParetoFronts(const ParetoPlot& p) {
   std::vector<std::string> args = ParetoArgs(p);
   args.push_back("--print-front");

@@ -66,6 +66,19 @@ struct ParetoPlot {
 /// Draws `p` to p.out_png; throws as RunPlotScript, or PlotError if no PNG appeared.
 void PlotPareto(const ParetoPlot& p);
 
+/// One figure of a single run (`tactip plot`), drawn by the script's subcommand `kind`
+/// from `csv` and the run's events (see README "Figures of one run").
+struct RunFigurePlot {
+  std::string kind;        ///< run-motion, run-quiver, run-markers or run-indentation
+  std::string csv;         ///< the figure's table (see run_figures/run_tables.h)
+  std::string events_csv;  ///< events.csv: onsets and fall drawn as vertical lines ("" for none)
+  std::string title;       ///< figure title
+  std::string out_png;     ///< PNG written atomically (nothing on failure)
+};
+
+/// Draws `p`; throws as RunPlotScript, or PlotError if no PNG appeared.
+void PlotRunFigure(const RunFigurePlot& p);
+
 /// Each panel's Pareto front, as the plot draws it: (error column, settings fastest
 /// first). Needs no PNG (p.out_png is ignored) and no matplotlib; throws as RunPlotScript.
 std::vector<std::pair<std::string, std::vector<std::string>>> ParetoFronts(const ParetoPlot& p);

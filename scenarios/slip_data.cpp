@@ -38,6 +38,14 @@ std::vector<int> ParseRunList(const std::string& text) {
   return {out.begin(), out.end()};
 }
 
+std::string RunsText(const std::vector<int>& runs) {
+  if (runs.size() == 1) return fmt::format("run {}", runs.front());
+  if (runs.back() - runs.front() + 1 == static_cast<int>(runs.size())) {
+    return fmt::format("runs {}-{}", runs.front(), runs.back());
+  }
+  return fmt::format("{} runs from {} to {}", runs.size(), runs.front(), runs.back());
+}
+
 const SensorRecord& ChooseSensor(const RunRecord& run, const std::string& name, const std::string& path) {
   if (name.empty() && !run.sensors.empty()) return run.sensors.front();
   if (const SensorRecord* s = run.FindSensor(name)) return *s;

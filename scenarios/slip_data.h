@@ -14,6 +14,10 @@ namespace tactip {
 /// throws InputError on malformed text.
 std::vector<int> ParseRunList(const std::string& text);
 
+/// The run indices of a dataset in words, for messages: "run 0", "runs 0-3" for a
+/// contiguous block, else "4 runs from 0 to 9" (`runs` ascending, not empty).
+std::string RunsText(const std::vector<int>& runs);
+
 /// The sensor of `run` (read from dataset `path`) named `name`, or its first sensor when
 /// `name` is empty. Throws InputError "--sensor 'NAME': dataset 'PATH' has no such sensor
 /// (its sensors: ...)" otherwise.

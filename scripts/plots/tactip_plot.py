@@ -5,6 +5,8 @@ Subcommands (see --help of each):
   check     exit 0 when matplotlib can be imported (prints its version)
   heatmap   one number per design of a sweep (designs.csv) over 1 or 2 swept keys
   pareto    error against run time, one panel per error column (`tactip accuracy`'s CSV)
+  run-motion, run-quiver, run-markers, run-indentation
+            the figures of one run (`tactip plot`'s CSVs, see the README's "Figures of one run")
 
 Uses only the Python standard library and matplotlib (Agg backend, no display). PNGs are
 rendered in memory and then written atomically (temporary file + rename): a failure leaves
@@ -75,13 +77,20 @@ def flag(text):
     return not math.isnan(v) and v != 0.0
 
 
-def save_png(fig, out):
-    """Renders `fig` to memory, then writes `out` atomically."""
+def save_png(fig, out, dpi=DPI, palette=False):
+    """Renders `fig` to memory at `dpi` (with `palette`: as 256 colours, through Pillow, which
+    Debian's matplotlib depends on), then writes `out` atomically."""
     folder = os.path.dirname(out) or "."
     if not os.path.isdir(folder):
         raise InputProblem(f"cannot write '{out}': folder '{folder}' does not exist")
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=DPI)
+    fig.savefig(buf, format="png", dpi=dpi)
+    if palette:
+        from PIL import Image
+        small = io.BytesIO()
+        Image.open(io.BytesIO(buf.getvalue())).convert("RGB").quantize(colors=256).save(small, format="png",
+                                                                                        optimize=True)
+        buf = small
     tmp = f"{out}.tmp.{os.getpid()}"
     try:
         with open(tmp, "wb") as f:
@@ -370,6 +379,194 @@ def cmd_pareto(a):
     save_png(fig, a.out)
 
 
+# ------------------------------------------------------------------ figures of one run
+
+# How each event is drawn: (events.csv name, legend text, colour, line style).
+EVENT_STYLES = [("gross_slip_onset", "gross-slip onset", "tab:red", "-"),
+                ("incipient_onset", "incipient onset", "darkorange", "--"),
+                ("object_fall", "object fall", "black", ":")]
+RUN_FIG_DPI = 100  # the run figures are committed to the README's gallery: kept small (and 256 colours)
+
+
+def read_events(path):
+    """{event name: time (s)} of the events that happened (events.csv of `tactip plot`)."""
+    if not path:
+        return {}
+    rows = read_csv(path, ["event", "time_s"])
+    return {r["event"]: number(r["time_s"]) for r in rows if not math.isnan(number(r["time_s"]))}
+
+
+def mark_events(ax, events):
+    """Vertical lines at the events, labelled in the legend."""
+    for name, text, colour, style in EVENT_STYLES:
+        if name in events:
+            ax.axvline(events[name], color=colour, ls=style, lw=1.2, label=f"{text} {events[name]:.3f} s")
+
+
+def run_title(fig, text, width_in):
+    """The figure title, each line wrapped to the figure's width (~0.075 in per character)."""
+    lines = [textwrap.fill(line, max(40, int(width_in / 0.075))) for line in text.split("\n")]
+    fig.suptitle("\n".join(lines), fontsize=9)
+
+
+def column(rows, col):
+    """A numeric column as a list (NaN for empty cells)."""
+    return [number(r[col]) for r in rows]
+
+
+def zoom_window(events, t):
+    """(start, end) of the time around the onsets and the fall (0.5 s before the first, 0.3 s
+    after the last), or None when no event happened or the window is the whole run."""
+    times = list(events.values())
+    if not times:
+        return None
+    lo, hi = max(min(times) - 0.5, t[0]), min(max(times) + 0.3, t[-1])
+    return (lo, hi) if hi > lo and (lo > t[0] or hi < t[-1]) else None
+
+
+def draw_speeds(ax, rows, t):
+    """Mean and max pin speed over time."""
+    ax.plot(t, column(rows, "max_speed_px_frame"), color="tab:purple", lw=0.8, alpha=0.7, label="max over pins")
+    ax.plot(t, column(rows, "mean_speed_px_frame"), color="black", lw=1.2, label="mean over pins")
+    ax.set_ylabel("pin speed (px/frame)")
+
+
+def cmd_run_motion(a):
+    rows = read_csv(a.csv, ["time_s", "mean_disp_px", "mean_speed_px_frame", "max_speed_px_frame"])
+    pins = [c for c in rows[0].keys() if c.startswith("pin") and c.endswith("_disp_px")]
+    events = read_events(a.events)
+    t = column(rows, "time_s")
+    zoom = zoom_window(events, t)
+    plt = pyplot()
+    fig, axes = plt.subplots(3 if zoom else 2, 1, figsize=(8, 8.4 if zoom else 6.4), layout="constrained")
+
+    # Displacement from the first frame: a few pins and the mean over all.
+    top = axes[0]
+    for c in pins:
+        top.plot(t, column(rows, c), lw=0.8, alpha=0.8, label="pin " + c[3:-len("_disp_px")])
+    top.plot(t, column(rows, "mean_disp_px"), color="black", lw=1.6, label="mean over pins")
+    top.set_ylabel("displacement from first frame (px)")
+    # Speed over the run, then (when there are events) around them, frame by frame.
+    draw_speeds(axes[1], rows, t)
+    if zoom:
+        draw_speeds(axes[2], rows, t)
+        axes[2].plot(t, column(rows, "mean_speed_px_frame"), "k.", ms=3)
+        axes[2].set_xlim(*zoom)
+        axes[2].set_title("around the events (dots: frames)", fontsize=8)
+    for ax in axes:
+        mark_events(ax, events)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7, loc="upper left", ncol=2)
+        ax.set_xlabel("time (s)")
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
+
+
+def quiver_scale(rows, span):
+    """(data units per px/frame, a round reference speed) so the fastest arrow spans ~12 % of
+    the pattern."""
+    speeds = [math.hypot(number(r["du_px"]), number(r["dv_px"])) for r in rows]
+    fastest = max([v for v in speeds if not math.isnan(v)] + [0.0])
+    if fastest <= 0:
+        return 1.0, 1.0
+    ref = 10 ** math.floor(math.log10(fastest))
+    for step in (5, 2):
+        if step * ref <= fastest:
+            ref *= step
+            break
+    return 0.12 * span / fastest, ref
+
+
+def cmd_run_quiver(a):
+    rows = read_csv(a.csv, ["panel", "frame", "time_s", "u_px", "v_px", "du_px", "dv_px", "contact"])
+    panels = ordered_unique(r["panel"] for r in rows)
+    plt = pyplot()
+    us, vs = column(rows, "u_px"), column(rows, "v_px")
+    span = max(max(us) - min(us), max(vs) - min(vs), 1.0)
+    gain, ref = quiver_scale(rows, span)
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.0 * len(panels), 5.0), layout="constrained", squeeze=False)
+    for ax, panel in zip(axes[0], panels):
+        sel = [r for r in rows if r["panel"] == panel]
+        u, v = column(sel, "u_px"), column(sel, "v_px")
+        du, dv = column(sel, "du_px"), column(sel, "dv_px")
+        touching = [flag(r["contact"]) for r in sel]
+        # Pins: grey, those in contact blue; arrows scaled alike in every panel.
+        ax.scatter(u, v, s=6, c=["tab:blue" if c else "0.6" for c in touching], zorder=2)
+        q = ax.quiver(u, v, [x * gain for x in du], [y * gain for y in dv], angles="xy", scale_units="xy", scale=1,
+                      color="tab:red", width=0.006, zorder=3)
+        mean = sum(math.hypot(x, y) for x, y in zip(du, dv)) / len(sel)
+        ax.set_title(f"{panel}: t = {number(sel[0]['time_s']):.3f} s (frame {sel[0]['frame']})\n"
+                     f"mean speed {mean:.2f} px/frame, {sum(touching)} pins in contact", fontsize=8)
+        ax.quiverkey(q, 0.72, 0.04, ref * gain, f"{ref:g} px/frame", labelpos="E", coordinates="axes",
+                     fontproperties={"size": 7})  # in the corner the pattern leaves free
+        ax.set_aspect("equal")
+        ax.set_xlim(min(us) - 0.1 * span, max(us) + 0.1 * span)
+        ax.set_ylim(max(vs) + 0.1 * span, min(vs) - 0.1 * span)  # image v grows downwards
+        ax.set_xlabel("u (px)", fontsize=8)
+        ax.tick_params(labelsize=7)
+    axes[0][0].set_ylabel("v (px)", fontsize=8)
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
+
+
+def correlation(xs, ys):
+    """Pearson correlation over the pairs where both are numbers (NaN if undefined)."""
+    pairs = [(x, y) for x, y in zip(xs, ys) if not (math.isnan(x) or math.isnan(y))]
+    if len(pairs) < 2:
+        return math.nan
+    mx, my = sum(p[0] for p in pairs) / len(pairs), sum(p[1] for p in pairs) / len(pairs)
+    sxy = sum((x - mx) * (y - my) for x, y in pairs)
+    sxx, syy = sum((x - mx) ** 2 for x, _ in pairs), sum((y - my) ** 2 for _, y in pairs)
+    return sxy / math.sqrt(sxx * syy) if sxx > 0 and syy > 0 else math.nan
+
+
+def cmd_run_markers(a):
+    cols = ["time_s", "internal_disp_px", "external_disp_px", "internal_speed_px_frame", "external_speed_px_frame"]
+    rows = read_csv(a.csv, cols)
+    events = read_events(a.events)
+    plt = pyplot()
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6.0), sharex=True, layout="constrained")
+    t = column(rows, "time_s")
+    # Mean displacement and mean speed of each marker set.
+    top.plot(t, column(rows, "internal_disp_px"), color="tab:blue", lw=1.2, label="internal pins")
+    top.plot(t, column(rows, "external_disp_px"), color="tab:green", lw=1.2, label="external markers")
+    top.set_ylabel("mean displacement from first frame (px)")
+    si, se = column(rows, "internal_speed_px_frame"), column(rows, "external_speed_px_frame")
+    bottom.plot(t, si, color="tab:blue", lw=1.0, label="internal pins")
+    bottom.plot(t, se, color="tab:green", lw=1.0, alpha=0.8, label="external markers")
+    bottom.set_ylabel("mean speed (px/frame)")
+    bottom.set_xlabel("time (s)")
+    bottom.set_title(f"correlation of the two mean speeds over the run: {correlation(si, se):.2f}", fontsize=8)
+    for ax in (top, bottom):
+        mark_events(ax, events)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7, loc="upper left")
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
+
+
+def cmd_run_indentation(a):
+    rows = read_csv(a.csv, ["rest_radius_px", "radial_disp_px", "axial_in_mm", "contact"])
+    plt = pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4.2), layout="constrained")
+    groups = [(True, "in contact", "tab:red"), (False, "not in contact", "tab:blue")]
+    for ax, col, label in ((axes[0], "radial_disp_px", "radial image displacement (px, + outwards)"),
+                           (axes[1], "axial_in_mm", "inward displacement along the camera axis (mm)")):
+        # One point per pin, coloured by contact.
+        for touching, text, colour in groups:
+            sel = [r for r in rows if flag(r["contact"]) == touching]
+            if sel:
+                ax.scatter(column(sel, "rest_radius_px"), column(sel, col), s=12, color=colour,
+                           label=f"{text} ({len(sel)})")
+        ax.axhline(0.0, color="0.5", lw=0.8)
+        ax.set_xlabel("rest radius in the image (px)")
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    run_title(fig, a.title, fig.get_figwidth())
+    save_png(fig, a.out, RUN_FIG_DPI, palette=True)
+
+
 # ------------------------------------------------------------------ command line
 
 def cmd_check(_):
@@ -401,7 +598,20 @@ def parser():
     q.add_argument("--out", default="", metavar="FILE.png", help="PNG written (atomically)")
     q.add_argument("--print-front", action="store_true",
                    help="print each panel's Pareto front: COLUMN<TAB>SETTING<TAB>... (fastest first)")
+    for name, what in (("run-motion", "pin displacement and speed over time (motion.csv)"),
+                       ("run-quiver", "pin-velocity arrows before, at and after the onset (quiver.csv)"),
+                       ("run-markers", "internal pins against external markers over time (markers.csv)"),
+                       ("run-indentation", "displacement against rest radius at the deepest press (indentation.csv)")):
+        r = sub.add_parser(name, help=what)
+        r.add_argument("csv", help="the table `tactip plot` wrote")
+        r.add_argument("--events", default="", metavar="EVENTS.csv", help="events.csv: onsets and fall as lines")
+        r.add_argument("--title", default="", help="figure title")
+        r.add_argument("--out", required=True, metavar="FILE.png", help="PNG written (atomically)")
     return p
+
+
+RUN_FIGURES = {"run-motion": cmd_run_motion, "run-quiver": cmd_run_quiver, "run-markers": cmd_run_markers,
+               "run-indentation": cmd_run_indentation}
 
 
 def main(argv):
@@ -410,7 +620,7 @@ def main(argv):
         print(f"{PROG}: pareto needs --out FILE.png or --print-front", file=sys.stderr)
         return 2
     try:
-        {"check": cmd_check, "heatmap": cmd_heatmap, "pareto": cmd_pareto}[a.command](a)
+        {"check": cmd_check, "heatmap": cmd_heatmap, "pareto": cmd_pareto, **RUN_FIGURES}[a.command](a)
     except InputProblem as e:
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2

@@ -12,6 +12,7 @@
 
 #include "scenarios/app/cli/accuracy_command.h"
 #include "scenarios/app/cli/detect_commands.h"
+#include "scenarios/app/cli/plot_command.h"
 #include "scenarios/app/cli/run_commands.h"
 #include "scenarios/app/cli/scenario_commands.h"
 #include "scenarios/app/cli/stability_commands.h"
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
       tactip::cli::AddStabilityCommands(app, &g_stop),
       tactip::cli::AddDetectorCommands(app, &g_stop),
       tactip::cli::AddRunCommands(app, &g_stop),
+      tactip::cli::AddPlotCommand(app),
       tactip::cli::AddViewCommand(app),
   };
   try {

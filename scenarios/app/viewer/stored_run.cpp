@@ -5,19 +5,11 @@
 #include <fmt/format.h>
 
 #include "scenarios/registry.h"
+#include "scenarios/slip_data.h"
 
 namespace tactip {
 
 namespace {
-
-// "run 0", "runs 0-3" for a contiguous block, else "4 runs from 0 to 9".
-std::string RunsText(const std::vector<int>& runs) {
-  if (runs.size() == 1) return fmt::format("run {}", runs.front());
-  if (runs.back() - runs.front() + 1 == static_cast<int>(runs.size())) {
-    return fmt::format("runs {}-{}", runs.front(), runs.back());
-  }
-  return fmt::format("{} runs from {} to {}", runs.size(), runs.front(), runs.back());
-}
 
 // The stored config text applied to the defaults (it holds every key), and checked.
 RailScenarioConfig StoredConfig(const std::string& path, const DatasetHeader& header) {
