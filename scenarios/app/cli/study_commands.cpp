@@ -11,6 +11,7 @@
 #include "scenarios/app/cli/output_checks.h"
 #include "scenarios/contact_checks.h"
 #include "scenarios/incipient_report.h"
+#include "scenarios/tracking_report.h"
 #include "scenarios/slip_data.h"
 #include "scenarios/sweep.h"
 #include "sim/base/files.h"
@@ -106,6 +107,27 @@ int RunReport(const StudyArgs& a) {
   return 0;
 }
 
+// tactip report tracking: the blob pipeline's detection error per run and sensor, and per sensor.
+int RunTrackingReport(const StudyArgs& a) {
+  CheckSensorOption(a.report_path, a.report_sensor);
+  const DatasetReader reader(a.report_path);
+  const CameraConfig camera = StoredRailConfig(reader.header()).sensor;
+  std::vector<TrackingFigures> rows, totals;
+  for (int idx : reader.run_indices()) {
+    const RunRecord run = reader.ReadRun(idx);
+    for (const SensorRecord& s : run.sensors) {
+      if (!a.report_sensor.empty() && s.name != a.report_sensor) continue;
+      rows.push_back(AnalyzeTracking(s, idx, camera, a.report_path));
+      // Each sensor's total over the runs, in sensor order.
+      auto total = std::find_if(totals.begin(), totals.end(), [&](const TrackingFigures& t) { return t.sensor == s.name; });
+      if (total == totals.end()) total = totals.insert(totals.end(), TrackingFigures{s.name});
+      total->Add(rows.back());
+    }
+  }
+  std::printf("%s", FormatTrackingReport(rows, totals).c_str());
+  return 0;
+}
+
 // One progress line per finished design.
 void PrintDesignProgress(int done, int total, const SweepDesignResult& r) {
   std::string d;
@@ -186,10 +208,14 @@ CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
 // Registers `tactip report incipient` and its options.
 CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
   auto* c = app.add_subcommand("report",
-                               "Per-run incipient-slip figures of a dataset: ground-truth lead times, "
+                               "Per-run figures of a dataset. incipient: ground-truth lead times, "
                                "first-slipping pins, internal vs external tracking, and the incipient detector's "
-                               "alarms.");
-  c->add_option("what", a.report_what, "incipient")->required()->check(CLI::IsMember({"incipient"}));
+                               "alarms; tracking: the blob pipeline's detection error.");
+  c->add_option("what", a.report_what,
+                "incipient, or tracking: the blob pipeline's pins (generate --images) against the projected truth "
+                "per run and sensor (share within 1 px, RMS and largest error, misses)")
+      ->required()
+      ->check(CLI::IsMember({"incipient", "tracking"}));
   c->add_option("file", a.report_path, "HDF5 dataset written by 'tactip generate'.")
       ->required()
       ->check(NonEmpty("an HDF5 dataset"));
@@ -224,7 +250,7 @@ std::function<int()> AddStudyCommands(CLI::App& app, const std::atomic<bool>* st
   auto* report = AddReport(app, *a);
   return [a, validate, sweep, report, stop]() -> int {
     if (*validate) return RunContactChecks(a->config);
-    if (*report) return RunReport(*a);
+    if (*report) return a->report_what == "tracking" ? RunTrackingReport(*a) : RunReport(*a);
     if (*sweep) return RunSweepCommand(*a, stop);
     return -1;
   };
