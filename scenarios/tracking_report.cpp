@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "sensors/tactile_image.h"
 #include "sim/base/errors.h"
 
 namespace tactip {
@@ -33,6 +34,7 @@ double TrackingFigures::RmsPx() const {
 
 void TrackingFigures::Add(const TrackingFigures& o) {
   samples += o.samples;
+  out_of_view += o.out_of_view;
   within_1px += o.within_1px;
   misses += o.misses;
   sum_sq_px2 += o.sum_sq_px2;
@@ -41,7 +43,7 @@ void TrackingFigures::Add(const TrackingFigures& o) {
 }
 
 TrackingFigures AnalyzeTracking(const SensorRecord& s, int run_index, const CameraConfig& camera_cfg,
-                                const std::string& path) {
+                                double pin_tip_radius_mm, const std::string& path) {
   if (s.detected_px.empty()) {
     throw InputError(fmt::format("dataset '{}': {}/sensors/{} has no pins/detected_px (generate it with --images)",
                                  path, RunGroupName(run_index), s.name));
@@ -51,8 +53,11 @@ TrackingFigures AnalyzeTracking(const SensorRecord& s, int run_index, const Came
   TrackingFigures f;
   f.sensor = s.name;
   f.run = run_index;
-  const size_t samples = s.detected_valid.size();
-  for (size_t k = 0; k < samples; ++k) {
+  for (size_t k = 0; k < s.detected_valid.size(); ++k) {
+    if (!TipInImage(camera_cfg, pin_tip_radius_mm, {s.pos_m[3 * k], s.pos_m[3 * k + 1], s.pos_m[3 * k + 2]})) {
+      ++f.out_of_view;
+      continue;
+    }
     const double e = ErrorPx(camera, s.pos_m, k, s.detected_px[2 * k], s.detected_px[2 * k + 1]);
     const double e_camera = ErrorPx(camera, s.pos_m, k, s.pos_px[2 * k], s.pos_px[2 * k + 1]);
     f.within_1px += e < kWithinPx ? 1 : 0;
@@ -60,24 +65,25 @@ TrackingFigures AnalyzeTracking(const SensorRecord& s, int run_index, const Came
     f.misses += s.detected_valid[k] ? 0 : 1;
     f.sum_sq_px2 += e * e;
     f.max_px = std::max(f.max_px, e);
+    ++f.samples;
   }
-  f.samples = static_cast<long long>(samples);
   return f;
 }
 
 std::string FormatTrackingReport(const std::vector<TrackingFigures>& rows, const std::vector<TrackingFigures>& totals) {
-  std::string out = fmt::format("{:<12} {:>5} {:>10} {:>10} {:>8} {:>8} {:>8} {:>11}\n", "sensor", "run", "samples",
-                                "within_1px", "rms_px", "max_px", "misses", "camera_1px");
+  std::string out = fmt::format("{:<12} {:>5} {:>10} {:>11} {:>10} {:>8} {:>8} {:>8} {:>11}\n", "sensor", "run",
+                                "samples", "out_of_view", "within_1px", "rms_px", "max_px", "misses", "camera_1px");
   auto row = [&](const TrackingFigures& f, const std::string& run) {
-    out += fmt::format("{:<12} {:>5} {:>10} {:>10.4f} {:>8.3f} {:>8.2f} {:>8} {:>11.4f}\n", f.sensor, run, f.samples,
-                       f.WithinFraction(), f.RmsPx(), f.max_px, f.misses,
+    out += fmt::format("{:<12} {:>5} {:>10} {:>11} {:>10.4f} {:>8.3f} {:>8.2f} {:>8} {:>11.4f}\n", f.sensor, run,
+                       f.samples, f.out_of_view, f.WithinFraction(), f.RmsPx(), f.max_px, f.misses,
                        f.samples > 0 ? static_cast<double>(f.camera_within_1px) / static_cast<double>(f.samples)
                                      : std::numeric_limits<double>::quiet_NaN());
   };
   for (const TrackingFigures& f : rows) row(f, std::to_string(f.run));
   for (const TrackingFigures& f : totals) row(f, "all");
-  out += "within_1px: share of (frame, pin) samples whose pins/detected_px lies within 1 px of the projection of "
-         "pins/pos_m; camera_1px: the same for the camera model's pins/pos_px (noise, dropouts)\n";
+  out += "samples: (frame, pin) pairs whose whole tip lies in the image (out_of_view: the others, not scored); "
+         "within_1px: share of samples whose pins/detected_px lies within 1 px of the projection of pins/pos_m; "
+         "misses: samples with detected_valid = 0; camera_1px: within_1px of the camera model's pins/pos_px\n";
   return out;
 }
 

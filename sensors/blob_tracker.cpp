@@ -10,6 +10,9 @@ namespace tactip {
 
 namespace {
 
+/// Azimuths this little below 0 (rounding in the centroid) count as 0, not as nearly 2 pi.
+constexpr double kAzimuthSlackRad = 1e-3;
+
 /// Squared distance between two image points (px^2).
 double Dist2(const cv::Point2f& a, const cv::Point2f& b) {
   const double du = a.x - b.x, dv = a.y - b.y;
@@ -96,7 +99,7 @@ std::vector<cv::Point2f> NumberPins(const std::vector<cv::Point2f>& blobs) {
   std::vector<Polar> polar;
   for (const cv::Point2f& b : blobs) {
     double az = std::atan2(-(b.y - c.y), b.x - c.x);
-    if (az < 0.0) az += 2.0 * std::numbers::pi;
+    if (az < -kAzimuthSlackRad) az += 2.0 * std::numbers::pi;
     polar.push_back({std::hypot(b.x - c.x, b.y - c.y), az, b});
   }
   std::sort(polar.begin(), polar.end(), [](const Polar& a, const Polar& b) { return a.radius < b.radius; });

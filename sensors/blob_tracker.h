@@ -51,7 +51,7 @@ class PinTracker {
 /// The blobs of a first real frame in the documented pin order: rings outwards from the
 /// blobs' centroid (a new ring where the radius jumps by more than half the median
 /// nearest-neighbour distance), each ring by azimuth from image +u towards image -v
-/// (sensor +y towards +z), starting at 0 rad. For a concentric-ring pattern seen straight on
+/// (sensor +y towards +z), starting at 0 rad (-0.001 rad counts as 0). For a concentric-ring pattern seen straight on
 /// this is the simulator's pin order (centre pin first).
 std::vector<cv::Point2f> NumberPins(const std::vector<cv::Point2f>& blobs);
 

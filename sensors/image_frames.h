@@ -11,7 +11,7 @@ namespace tactip {
 /// One frame's pixels, zlib-compressed (what HDF5's deflate filter stores).
 using CompressedFrame = std::vector<std::uint8_t>;
 
-/// Compresses `bytes` pixels at `pixels` with zlib at the datasets' deflate level.
+/// Compresses `bytes` pixels at `pixels` with zlib (level 1, Z_BEST_SPEED).
 CompressedFrame CompressFrame(const std::uint8_t* pixels, std::size_t bytes);
 
 /// The `bytes` pixels of `frame`; throws InputError if it is not a zlib stream of that size.

@@ -35,13 +35,22 @@ void TactileImageConfig::ValidateRules() const {
   }
 }
 
+double TipRadiusPx(const CameraConfig& camera, double pin_tip_radius_mm, double depth_m) {
+  return 0.5 * (camera.fx_px + camera.fy_px) * pin_tip_radius_mm * 1e-3 / depth_m;
+}
+
+bool TipInImage(const CameraConfig& camera, double pin_tip_radius_mm, const std::array<double, 3>& p) {
+  const double depth = p[0] + camera.camera_offset_mm * 1e-3;
+  if (depth <= 0.0) return false;
+  const auto uv = PinholeCamera(camera).Project(p);
+  const double r = TipRadiusPx(camera, pin_tip_radius_mm, depth);
+  // Pixel centres run from 0 to size - 1; the disc must end inside them.
+  return uv[0] - r >= 0.0 && uv[1] - r >= 0.0 && uv[0] + r <= camera.width_px - 1.0 && uv[1] + r <= camera.height_px - 1.0;
+}
+
 TactileImageRenderer::TactileImageRenderer(const TactileImageConfig& cfg, const CameraConfig& camera,
                                            std::uint64_t noise_seed)
     : cfg_(cfg), camera_(camera), rng_(noise_seed) {}
-
-double TactileImageRenderer::RadiusPx(double depth_m) const {
-  return 0.5 * (camera_.fx_px + camera_.fy_px) * cfg_.pin_tip_radius_mm * 1e-3 / depth_m;
-}
 
 const cv::Mat& TactileImageRenderer::Render(const std::vector<float>& px, const std::vector<float>& pos_m) {
   const size_t n = px.size() / 2;
@@ -62,7 +71,7 @@ const cv::Mat& TactileImageRenderer::Render(const std::vector<float>& px, const 
     const double grey = cfg_.skin_grey + (cfg_.pin_grey - cfg_.skin_grey) * std::pow(cos_ray, cfg_.rim_falloff_power);
     const cv::Point centre(static_cast<int>(std::lround(px[2 * i] * kSubPixelScale)),
                            static_cast<int>(std::lround(px[2 * i + 1] * kSubPixelScale)));
-    const int radius = static_cast<int>(std::lround(RadiusPx(depth) * kSubPixelScale));
+    const int radius = static_cast<int>(std::lround(TipRadiusPx(camera_, cfg_.pin_tip_radius_mm, depth) * kSubPixelScale));
     cv::circle(drawn_, centre, radius, cv::Scalar(grey), cv::FILLED, cv::LINE_AA, kSubPixelBits);
   }
   // Optics: Gaussian blur.

@@ -4,6 +4,7 @@
 // its brightness falling off towards the rim; then optical blur and pixel noise, uint8.
 // The `images` config section also holds the blob pipeline's settings (blob_tracker.h).
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -78,6 +79,15 @@ struct TactileImageConfig {
   void ValidateRules() const;
 };
 
+/// Image radius (px) of a pin tip of radius `pin_tip_radius_mm` at `depth_m` in front of
+/// `camera`: f r / depth, f the mean of the two focal lengths.
+double TipRadiusPx(const CameraConfig& camera, double pin_tip_radius_mm, double depth_m);
+
+/// True when the whole tip disc of a pin at `p_sensor_m` (sensor frame, m), of radius
+/// `pin_tip_radius_mm`, lies inside `camera`'s image: a tip cut by the border (or outside the
+/// field of view, as the outer rings of a wide fingerprint pattern are) cannot be located.
+bool TipInImage(const CameraConfig& camera, double pin_tip_radius_mm, const std::array<double, 3>& p_sensor_m);
+
 /// Renders the internal camera's image of N pin tips. Not thread-safe; one per sensor.
 class TactileImageRenderer {
  public:
@@ -91,9 +101,6 @@ class TactileImageRenderer {
 
   /// The last rendered image (empty before the first Render).
   const cv::Mat& image() const { return image_; }
-  /// Image radius (px) of a tip at depth `depth_m` in front of the camera.
-  double RadiusPx(double depth_m) const;
-
  private:
   TactileImageConfig cfg_;
   CameraConfig camera_;

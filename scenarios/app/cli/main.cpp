@@ -16,6 +16,7 @@
 #include "scenarios/app/cli/scenario_commands.h"
 #include "scenarios/app/cli/stability_commands.h"
 #include "scenarios/app/cli/study_commands.h"
+#include "scenarios/app/cli/track_command.h"
 #include "scenarios/app/viewer/view_command.h"
 #include "scenarios/rail.h"
 #include "sim/base/errors.h"
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
       tactip::cli::AddStabilityCommands(app, &g_stop),
       tactip::cli::AddDetectorCommands(app, &g_stop),
       tactip::cli::AddRunCommands(app, &g_stop),
+      tactip::cli::AddTrackCommand(app),
       tactip::cli::AddViewCommand(app),
   };
   try {

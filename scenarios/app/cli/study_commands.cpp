@@ -111,13 +111,13 @@ int RunReport(const StudyArgs& a) {
 int RunTrackingReport(const StudyArgs& a) {
   CheckSensorOption(a.report_path, a.report_sensor);
   const DatasetReader reader(a.report_path);
-  const CameraConfig camera = StoredRailConfig(reader.header()).sensor;
+  const RailScenarioConfig stored = StoredRailConfig(reader.header());
   std::vector<TrackingFigures> rows, totals;
   for (int idx : reader.run_indices()) {
     const RunRecord run = reader.ReadRun(idx);
     for (const SensorRecord& s : run.sensors) {
       if (!a.report_sensor.empty() && s.name != a.report_sensor) continue;
-      rows.push_back(AnalyzeTracking(s, idx, camera, a.report_path));
+      rows.push_back(AnalyzeTracking(s, idx, stored.sensor, stored.images.pin_tip_radius_mm, a.report_path));
       // Each sensor's total over the runs, in sensor order.
       auto total = std::find_if(totals.begin(), totals.end(), [&](const TrackingFigures& t) { return t.sensor == s.name; });
       if (total == totals.end()) total = totals.insert(totals.end(), TrackingFigures{s.name});
