@@ -15,6 +15,7 @@
 #include "sensors/dataset.h"
 #include "sensors/image_pipeline.h"
 #include "sensors/run_recorder.h"
+#include "dome_tips.h"
 #include "input_error.h"
 
 namespace tactip {
@@ -24,41 +25,12 @@ constexpr double kWithinPx = 1.0;       // the acceptance radius of a detected p
 constexpr double kAreaTolerance = 0.15; // drawn disc area against pi r^2
 constexpr double kGreyTolerance = 12.0; // grey levels: noise (2) and blur at a disc's centre
 
-// Tips of a concentric-ring pattern (ring k: 6k pins, from +y towards +z) on an 18 mm
-// sphere, rings 0.15 rad (2.7 mm) apart: N = 127 for 6 rings, the outer ring ~219 px from the
-// image centre. Sensor frame, m.
-std::vector<float> DomeTips(int rings) {
-  std::vector<float> pos_m;
-  for (int r = 0; r <= rings; ++r) {
-    const int n = r == 0 ? 1 : 6 * r;
-    for (int k = 0; k < n; ++k) {
-      const double azimuth = 2.0 * std::numbers::pi * k / n, polar = 0.15 * r;
-      pos_m.push_back(static_cast<float>(0.018 * std::cos(polar)));
-      pos_m.push_back(static_cast<float>(0.018 * std::sin(polar) * std::cos(azimuth)));
-      pos_m.push_back(static_cast<float>(0.018 * std::sin(polar) * std::sin(azimuth)));
-    }
-  }
-  return pos_m;
-}
-
-// The image positions of `pos_m` through `camera`.
-std::vector<float> Project(const CameraConfig& camera, const std::vector<float>& pos_m) {
-  std::vector<float> px;
-  const PinholeCamera cam(camera);
-  for (size_t i = 0; i + 2 < pos_m.size(); i += 3) {
-    const auto uv = cam.Project({pos_m[i], pos_m[i + 1], pos_m[i + 2]});
-    px.push_back(static_cast<float>(uv[0]));
-    px.push_back(static_cast<float>(uv[1]));
-  }
-  return px;
-}
-
 // One pin at `p` (sensor frame, m) on an otherwise empty image.
 cv::Mat RenderOne(const TactileImageConfig& cfg, const std::array<float, 3>& p, std::uint64_t seed = 1) {
   const CameraConfig camera;
   const std::vector<float> pos_m(p.begin(), p.end());
   TactileImageRenderer renderer(cfg, camera, seed);
-  return renderer.Render(Project(camera, pos_m), pos_m).clone();
+  return renderer.Render(ProjectTips(camera, pos_m), pos_m).clone();
 }
 
 TEST(TactileImageTest, TipRadiusIsThePhysicalRadiusProjectedThroughTheCamera) {
@@ -133,7 +105,7 @@ TEST(TactileImageConfigTest, RulesNameTheKeyAndTheBound) {
 TEST(BlobPipelineTest, RecoversEveryPinOfARenderedDomeWithin1Px) {
   const CameraConfig camera;
   const std::vector<float> pos_m = DomeTips(6);
-  const std::vector<float> px = Project(camera, pos_m);
+  const std::vector<float> px = ProjectTips(camera, pos_m);
   SensorImagePipeline pipeline(TactileImageConfig{}, camera, 3);
   const ImageReading& r = pipeline.Capture(px, pos_m);
   ASSERT_EQ(r.detected_valid.size(), 127u);
@@ -164,7 +136,7 @@ TEST(PinTrackerTest, APinWithoutABlobInTheGateKeepsItsPositionAndIsNotValid) {
 }
 
 TEST(NumberPinsTest, ShuffledBlobsOfAConcentricPatternComeBackInTheSimulatorsPinOrder) {
-  const std::vector<float> px = Project(CameraConfig{}, DomeTips(6));
+  const std::vector<float> px = ProjectTips(CameraConfig{}, DomeTips(6));
   std::vector<cv::Point2f> blobs;
   for (size_t i = 0; i + 1 < px.size(); i += 2) blobs.emplace_back(px[i], px[i + 1]);
   std::vector<cv::Point2f> shuffled = blobs;
