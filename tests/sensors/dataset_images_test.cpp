@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sensors/dataset.h"
+#include "input_error.h"
 #include "run_records.h"
 
 namespace tactip {
@@ -108,6 +109,33 @@ TEST(DatasetImagesTest, CheckShapesRefusesImagesOfAnotherFrameCount) {
   RunRecord run = RunWithImages(0, 3, 2);
   run.sensors[0].images.pop_back();
   EXPECT_THROW(run.CheckShapes(), std::logic_error);
+}
+
+TEST(DatasetImagesTest, ImagesNotStoredOneChunkPerFrameAreRefusedNamingTheArray) {
+  const std::string path = TempPath("d.h5");
+  {
+    DatasetWriter w(path, DatasetHeader{});
+    w.WriteRun(RunWithImages(0, 3, 2));
+    w.Commit();
+  }
+  {
+    // Replace the images by a contiguous (unchunked) array of the same shape.
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    const hid_t sensor = H5Gopen2(file, "/runs/run_0000/sensors/tactip", H5P_DEFAULT);
+    H5Ldelete(sensor, "images", H5P_DEFAULT);
+    const hsize_t shape[3] = {3, kHeight, kWidth};
+    const hid_t space = H5Screate_simple(3, shape, nullptr);
+    const hid_t dset = H5Dcreate2(sensor, "images", H5T_STD_U8LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Dclose(dset);
+    H5Sclose(space);
+    H5Gclose(sensor);
+    H5Fclose(file);
+  }
+  const std::string message = InputErrorOf([&] { DatasetReader(path).ReadRun(0); });
+  fs::remove(path);
+  EXPECT_EQ(message, "dataset '" + path +
+                         "': run_0000/sensors/tactip/images is not stored one deflate-compressed chunk per frame "
+                         "(chunks (1, 5, 8), gzip)");
 }
 
 }  // namespace
