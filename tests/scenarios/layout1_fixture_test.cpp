@@ -41,8 +41,14 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
   const DatasetReader old_file(kFixture), now(P("now.h5"));
   EXPECT_EQ(old_file.header().layout_version, 1);
   EXPECT_EQ(now.header().layout_version, 2);
-  // The same config; this version lists the scene's sensors too (the one default TacTip).
-  EXPECT_EQ(old_file.header().config_yaml + "sensors:\n  - name: \"tactip\"\n    offset_y_mm: 0\n", now.header().config_yaml);
+  // The same config; this version adds the images section (off, at its defaults) and lists
+  // the scene's sensors (the one default TacTip).
+  const std::string images =
+      "images:\n  enabled: false\n  pin_tip_radius_mm: 0.5\n  skin_grey: 25\n  pin_grey: 225\n"
+      "  rim_falloff_power: 4\n  blur_sigma_px: 1\n  noise_grey: 2\n  threshold_min: 60\n  threshold_max: 190\n"
+      "  threshold_step: 32\n  min_blob_area_px: 12\n  max_blob_area_px: 2500\n  gate_px: 10\n";
+  EXPECT_EQ(old_file.header().config_yaml + images + "sensors:\n  - name: \"tactip\"\n    offset_y_mm: 0\n",
+            now.header().config_yaml);
   ASSERT_EQ(old_file.run_indices(), now.run_indices());
   for (const int k : now.run_indices()) {
     SCOPED_TRACE("run " + std::to_string(k));
