@@ -29,4 +29,12 @@ const Scenario& FindScenario(const std::string& name) {
   throw InputError("unknown scenario '" + name + "' (known: " + known + ")");
 }
 
+RailScenarioConfig StoredRailConfig(const DatasetHeader& header) {
+  RailFamily(FindScenario(header.scenario));
+  RailScenarioConfig cfg;
+  ApplyFlat(cfg, FlattenYaml(header.config_yaml, "its root attribute config_yaml"));
+  ValidateConfig(cfg);
+  return cfg;
+}
+
 }  // namespace tactip

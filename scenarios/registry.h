@@ -9,6 +9,7 @@
 
 #include "scenarios/rail/rail_protocol_scenario.h"
 #include "scenarios/scenario.h"
+#include "sensors/dataset.h"
 
 namespace tactip {
 
@@ -16,5 +17,9 @@ namespace tactip {
 const std::vector<std::unique_ptr<Scenario>>& Scenarios();
 /// The scenario named `name`; throws InputError listing the known names.
 const Scenario& FindScenario(const std::string& name);
+
+/// The config a dataset of a rail-protocol scenario was written with: its stored config
+/// text applied to the defaults (it holds every key), and checked. Throws InputError.
+RailScenarioConfig StoredRailConfig(const DatasetHeader& header);
 
 }  // namespace tactip

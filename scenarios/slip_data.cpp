@@ -61,17 +61,25 @@ void CheckSensorOption(const std::string& path, const std::string& name) {
 namespace {
 
 /// The frames of sensor `s` of run `rec` (read from `path`), exactly what a camera gives:
-/// noisy pixel positions and detection flags.
-std::vector<PinFrame> SensorFrames(const RunRecord& rec, const SensorRecord& s, const std::string& path) {
+/// pixel positions and detection flags, of the camera model or of the blob pipeline.
+std::vector<PinFrame> SensorFrames(const RunRecord& rec, const SensorRecord& s, const std::string& path,
+                                   PinSource pins) {
   const size_t T = rec.frames(), N = static_cast<size_t>(s.n_pins);
+  if (pins == PinSource::kDetected && s.detected_px.empty()) {
+    throw InputError(fmt::format("--pins detected: dataset '{}' {}/sensors/{} has no pins/detected_px (generate it "
+                                 "with --images)",
+                                 path, RunGroupName(rec.index), s.name));
+  }
+  const std::vector<float>& pos_px = pins == PinSource::kDetected ? s.detected_px : s.pos_px;
+  const std::vector<std::uint8_t>& valid = pins == PinSource::kDetected ? s.detected_valid : s.valid;
   std::vector<PinFrame> frames(T);
   for (size_t f = 0; f < T; ++f) {
     PinFrame& pf = frames[f];
     pf.time_s = rec.time[f];
     pf.pos_px.resize(static_cast<Eigen::Index>(N), 2);
-    pf.valid.assign(s.valid.begin() + f * N, s.valid.begin() + (f + 1) * N);
+    pf.valid.assign(valid.begin() + f * N, valid.begin() + (f + 1) * N);
     for (size_t i = 0; i < N; ++i) {
-      const float u = s.pos_px[(f * N + i) * 2], v = s.pos_px[(f * N + i) * 2 + 1];
+      const float u = pos_px[(f * N + i) * 2], v = pos_px[(f * N + i) * 2 + 1];
       if (!std::isfinite(u) || !std::isfinite(v)) {
         throw InputError(fmt::format("dataset '{}' run {} frame {} pin {}: position is not a finite number", path,
                                      rec.index, f, i));
@@ -85,8 +93,14 @@ std::vector<PinFrame> SensorFrames(const RunRecord& rec, const SensorRecord& s, 
 
 }  // namespace
 
+PinSource ParsePinSource(const std::string& text) {
+  if (text == "camera") return PinSource::kCamera;
+  if (text == "detected") return PinSource::kDetected;
+  throw InputError("--pins '" + text + "': must be camera or detected");
+}
+
 std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
-                                        bool score_onset_frame, const std::string& sensor) {
+                                        bool score_onset_frame, const std::string& sensor, PinSource pins) {
   const DatasetReader reader(path);
   std::vector<int> wanted = runs.empty() ? reader.run_indices() : runs;
   for (int idx : wanted) {
@@ -104,7 +118,7 @@ std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vect
     run.run = idx;
     const size_t T = rec.frames();
     if (T >= 2) run.frame_rate_hz = (T - 1) / (rec.time.back() - rec.time.front());
-    run.frames = SensorFrames(rec, ChooseSensor(rec, sensor, path), path);
+    run.frames = SensorFrames(rec, ChooseSensor(rec, sensor, path), path, pins);
     // Ground truth: labelled window from the retraction, onset from the exact onset time.
     auto attr = [&](const char* k) {
       auto it = rec.attrs.find(k);
@@ -134,7 +148,7 @@ std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vect
 }
 
 std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs,
-                                   const std::string& sensor) {
+                                   const std::string& sensor, PinSource pins) {
   auto ends_with = [&](const char* s) {
     const std::string x(s);
     return path.size() >= x.size() && path.compare(path.size() - x.size(), x.size(), x) == 0;
@@ -144,6 +158,9 @@ std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<in
       throw InputError(fmt::format("--sensor '{}': '{}' is a CSV recording of one sensor; --sensor picks a sensor of "
                                    "an HDF5 dataset", sensor, path));
     }
+    if (pins == PinSource::kDetected) {
+      throw InputError(fmt::format("--pins detected: '{}' is a CSV recording: its pins are the only ones it has", path));
+    }
     LabeledRun run;
     run.frames = ReadPinCsv(path);
     if (run.frames.size() >= 2) {
@@ -151,7 +168,7 @@ std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<in
     }
     return {std::move(run)};
   }
-  return LoadDatasetRuns(path, runs, false, sensor);
+  return LoadDatasetRuns(path, runs, false, sensor, pins);
 }
 
 }  // namespace tactip

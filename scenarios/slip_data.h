@@ -27,21 +27,33 @@ const SensorRecord& ChooseSensor(const RunRecord& run, const std::string& name, 
 /// `name` ("" = the first); reads only that run's summary.
 void CheckSensorOption(const std::string& path, const std::string& name);
 
+/// Which pin positions of a dataset a detector sees.
+enum class PinSource {
+  kCamera,    ///< pins/pos_px and pins/valid: the camera model (projection, noise, dropouts)
+  kDetected,  ///< pins/detected_px and pins/detected_valid: the blob pipeline on rendered images
+};
+
+/// "camera" or "detected" as a PinSource; throws InputError naming --pins otherwise.
+PinSource ParsePinSource(const std::string& text);
+
 /// Reads runs of an HDF5 dataset as labelled frame sequences, as sensor `sensor` ("" =
-/// the dataset's first) recorded them. `runs` empty = all runs. The labelled window
+/// the dataset's first) recorded them, with the pin positions of `pins` (kDetected throws
+/// InputError naming the run and sensor when the dataset has no detected pins). `runs` empty = all runs. The labelled window
 /// starts at the run's retraction; the onset frame is the first frame at or after
 /// `gross_slip_onset_s`. That frame's velocity spans the onset (part static, part slip),
 /// so unless `score_onset_frame` is set it is a transition frame and the slip frames start
 /// at the next one. Throws InputError for a missing/corrupt file, a run that is not in
 /// the dataset or a sensor it does not have.
 std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
-                                        bool score_onset_frame = false, const std::string& sensor = "");
+                                        bool score_onset_frame = false, const std::string& sensor = "",
+                                        PinSource pins = PinSource::kCamera);
 
 /// Reads pin frames from the project's HDF5 datasets (of sensor `sensor`, "" = the first)
 /// or from a real-TacTip CSV recording (by extension: .h5/.hdf5 or .csv). CSV input is
-/// one run (index 0) of one sensor with no ground truth: a `sensor` name is refused.
+/// one run (index 0) of one sensor with no ground truth: a `sensor` name and detected pins
+/// are refused.
 /// Throws InputError naming the file and problem.
 std::vector<LabeledRun> LoadFrames(const std::string& path, const std::vector<int>& runs,
-                                   const std::string& sensor = "");
+                                   const std::string& sensor = "", PinSource pins = PinSource::kCamera);
 
 }  // namespace tactip

@@ -63,6 +63,16 @@ void SensorRecord::CheckShapes(size_t t, const std::string& run_who) const {
     CheckCount(who, "external_px", external_px.size(), t * n * 2, "T*N*2", dims);
     CheckCount(who, "external_m", external_m.size(), t * n * 3, "T*N*3", dims);
   }
+  if (!images.empty() || !detected_px.empty() || !detected_valid.empty()) {
+    // The image pipeline's arrays come together.
+    CheckCount(who, "images", images.size(), t, "T", dims);
+    CheckCount(who, "detected_px", detected_px.size(), t * n * 2, "T*N*2", dims);
+    CheckCount(who, "detected_valid", detected_valid.size(), t * n, "T*N", dims);
+    if (image_width < 1 || image_height < 1) {
+      throw std::logic_error(who + "images of " + std::to_string(image_width) + " x " + std::to_string(image_height) +
+                             " px (need >= 1 x 1)");
+    }
+  }
 }
 
 void RunRecord::CheckShapes() const {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sensors/image_frames.h"
 #include "sensors/shard.h"
 
 namespace tactip {
@@ -48,6 +49,12 @@ struct SensorRecord {
   std::vector<float> external_m;        ///< (T,N,3) true outer contact points, sensor frame, m, or empty
   std::vector<float> normal_N;          ///< (T,N) normal force at each pin, N
   std::vector<float> tangential_N;      ///< (T,N,2) tangential force (sensor y, z), N
+  /// Rendered camera frames (images.enabled), or empty: T frames of image_height x
+  /// image_width uint8 pixels, each zlib-compressed (one HDF5 chunk of `images`).
+  std::vector<CompressedFrame> images;
+  int image_width = 0, image_height = 0;  ///< frame size (px) when `images` is not empty
+  std::vector<float> detected_px;         ///< (T,N,2) pins tracked by the blob pipeline, px, or empty
+  std::vector<std::uint8_t> detected_valid;  ///< (T,N) 1 = a blob within the gate that frame, or empty
   /// Scalar sensor attributes (besides n_pins, which the group always carries).
   std::map<std::string, double> attrs;
   /// Text sensor attributes (skin_pattern, ...).

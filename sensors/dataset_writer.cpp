@@ -15,6 +15,7 @@
 
 #include "sensors/hdf5_discard.h"
 #include "sensors/hdf5_io.h"
+#include "sensors/image_hdf5.h"
 #include "sim/config.h"
 #include "sim/base/files.h"
 
@@ -51,6 +52,7 @@ std::vector<FiniteCheck> FiniteChecks(const RunRecord& run) {
     const size_t n = static_cast<size_t>(s.n_pins);
     out.push_back({at + "pins/pos_px", FirstNonFinite(s.pos_px), 2 * n, 2});
     out.push_back({at + "pins/pos_m", FirstNonFinite(s.pos_m), 3 * n, 3});
+    out.push_back({at + "pins/detected_px", FirstNonFinite(s.detected_px), 2 * n, 2});
     out.push_back({at + "external/pos_px", FirstNonFinite(s.external_px), 2 * n, 2});
     out.push_back({at + "external/pos_m", FirstNonFinite(s.external_m), 3 * n, 3});
     out.push_back({at + "contact/normal_N", FirstNonFinite(s.normal_N), n, 1});
@@ -101,7 +103,13 @@ void WriteSensor(hid_t sensors, const SensorRecord& s, hsize_t t, const std::str
     WriteArray(pins.get(), "pos_px", {t, n, 2}, s.pos_px, "px", at + "/pins", err);
     WriteArray(pins.get(), "valid", {t, n}, s.valid, "1", at + "/pins", err);
     WriteArray(pins.get(), "pos_m", {t, n, 3}, s.pos_m, "m", at + "/pins", err);
+    if (!s.images.empty()) {
+      // The blob pipeline's pins, beside the camera model's.
+      WriteArray(pins.get(), "detected_px", {t, n, 2}, s.detected_px, "px", at + "/pins", err);
+      WriteArray(pins.get(), "detected_valid", {t, n}, s.detected_valid, "1", at + "/pins", err);
+    }
   }
+  if (!s.images.empty()) WriteImageArray(g, "images", s.images, s.image_width, s.image_height, at, err);
   {
     const Hid labels = CreateGroup(g, "labels", at + "/labels", err);
     WriteArray(labels.get(), "gross_slip", {t}, s.gross_slip, "1", at + "/labels", err);

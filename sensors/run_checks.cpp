@@ -35,6 +35,14 @@ void CheckFinite(const RunRecord& run, const std::string& source, const std::str
   }
 }
 
+/// Refuses the first value other than 0 or 1 of a (T, N) flag array.
+void CheckFlags(const RunRecord& run, const std::string& source, const std::string& array,
+                const std::vector<std::uint8_t>& flags, size_t n) {
+  for (size_t i = 0; i < flags.size(); ++i) {
+    if (flags[i] > 1) Refuse(run, source, array, fmt::format("is {} at {} (must be 0 or 1)", flags[i], Position(i, n, 1)));
+  }
+}
+
 }  // namespace
 
 void CheckRunTimes(const RunRecord& run, const std::string& source) {
@@ -60,12 +68,9 @@ void CheckRunValues(const RunRecord& run, const std::string& source, int layout_
     CheckFinite(run, source, at + "contact/tangential_N", s.tangential_N, 2, n);
     CheckFinite(run, source, at + "external/pos_px", s.external_px, 2, n);
     CheckFinite(run, source, at + "external/pos_m", s.external_m, 3, n);
-    for (size_t i = 0; i < s.valid.size(); ++i) {
-      if (s.valid[i] > 1) {
-        Refuse(run, source, at + "pins/valid",
-               fmt::format("is {} at {} (must be 0 or 1)", s.valid[i], Position(i, n, 1)));
-      }
-    }
+    CheckFinite(run, source, at + "pins/detected_px", s.detected_px, 2, n);
+    CheckFlags(run, source, at + "pins/valid", s.valid, n);
+    CheckFlags(run, source, at + "pins/detected_valid", s.detected_valid, n);
   }
   CheckFinite(run, source, "object/height_m", run.object_height_m, 0);
   // The controls: (T, U), named by frame.

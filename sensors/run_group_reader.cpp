@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "sensors/image_hdf5.h"
 #include "sensors/run_checks.h"
 #include "sim/config.h"
 
@@ -171,6 +172,15 @@ void RunGroupReader::ReadSensorArrays(SensorRecord& s, hsize_t t) const {
   if (HasLink(at + "external/pos_px")) {
     s.external_px = ReadArray<float>(at + "external/pos_px", {t, n, 2});
     s.external_m = ReadArray<float>(at + "external/pos_m", {t, n, 3});
+  }
+  // Optional: the rendered frames and the blob pipeline's pins (images.enabled).
+  if (HasLink(at + "images")) {
+    ImageStack stack = ReadImageArray(OpenArray(at + "images").get(), t, Name() + ": ", run_ + "/" + at + "images");
+    s.images = std::move(stack.frames);
+    s.image_width = stack.width;
+    s.image_height = stack.height;
+    s.detected_px = ReadArray<float>(at + "pins/detected_px", {t, n, 2});
+    s.detected_valid = ReadArray<std::uint8_t>(at + "pins/detected_valid", {t, n});
   }
 }
 

@@ -49,6 +49,27 @@ void RunRecorder::Frame(double time_s, const std::vector<const SensorReading*>& 
   AppendAll(rec_.actions.controls, controls);
 }
 
+void RunRecorder::Images(size_t sensor, const ImageReading& r, int width, int height) {
+  if (sensor >= rec_.sensors.size()) {
+    throw std::logic_error("run " + std::to_string(rec_.index) + ": images of sensor " + std::to_string(sensor) +
+                           " of " + std::to_string(rec_.sensors.size()));
+  }
+  SensorRecord& s = rec_.sensors[sensor];
+  const size_t n = static_cast<size_t>(s.n_pins);
+  const bool size_changed = !s.images.empty() && (s.image_width != width || s.image_height != height);
+  if (r.detected_valid.size() != n || r.detected_px.size() != 2 * n || size_changed) {
+    throw std::logic_error("sensor '" + s.name + "': images of " + std::to_string(r.detected_valid.size()) +
+                           " pins, " + std::to_string(width) + " x " + std::to_string(height) +
+                           " px, for a group of " + std::to_string(n) + " pins");
+  }
+  // Checked first: a frame that does not fit leaves the record as it was.
+  s.image_width = width;
+  s.image_height = height;
+  s.images.push_back(r.image);
+  AppendAll(s.detected_px, r.detected_px);
+  AppendAll(s.detected_valid, r.detected_valid);
+}
+
 void RunRecorder::Append(const SensorReading& r, std::uint8_t gross_slip, SensorRecord& s) {
   AppendAll(s.pos_m, r.pos_m);
   AppendAll(s.pos_px, r.pos_px);

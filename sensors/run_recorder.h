@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sensors/dataset.h"
+#include "sensors/image_pipeline.h"
 #include "sensors/tactile_sensor.h"
 
 namespace tactip {
@@ -32,6 +33,12 @@ class RunRecorder {
   /// not fit.
   void Frame(double time_s, const std::vector<const SensorReading*>& readings, std::uint8_t gross_slip,
              double object_height_m, const std::vector<double>& controls);
+
+  /// Appends the image pipeline's output of the frame just recorded by Frame() to sensor
+  /// group `sensor` (frames `width` x `height` px). Call it for every frame of a run or for
+  /// none. Throws std::logic_error, recording nothing, if the sensor index, the pin count or
+  /// the frame size does not fit.
+  void Images(size_t sensor, const ImageReading& reading, int width, int height);
 
  private:
   static void Append(const SensorReading& reading, std::uint8_t gross_slip, SensorRecord& group);

@@ -9,6 +9,7 @@
 #include "scenarios/rail/run_health.h"
 #include "sensors/camera.h"
 #include "sensors/labels.h"
+#include "sensors/tactile_image.h"
 #include "sim/sim_config.h"
 
 namespace tactip {
@@ -25,6 +26,7 @@ struct RailScenarioConfig {
   ExternalCameraConfig external;
   LabelConfig labels;
   HealthConfig health;
+  TactileImageConfig images;
   std::vector<SensorMountConfig> sensors{SensorMountConfig{}};  ///< the TacTips on the arm (one by default)
 
   template <class V>
@@ -39,6 +41,7 @@ struct RailScenarioConfig {
     v.Section("external", external);
     v.Section("labels", labels);
     v.Section("health", health);
+    v.Section("images", images);
     v.List("sensors", sensors);
   }
   /// Cross-field rules, including the timestep stability limit of the built model.

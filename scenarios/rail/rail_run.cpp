@@ -115,7 +115,9 @@ void RailRun::AddChannels(const RailScenarioConfig& cfg, const Draws& d) {
     channels_.push_back(Channel{
         TactileSensor(im_.sensor_specs[k], ids, DeriveSeed(base, 1), DeriveSeed(base, 2)),
         FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_),
-        std::vector<std::uint8_t>(n_, 0), {}});
+        std::vector<std::uint8_t>(n_, 0), {}, std::nullopt});
+    // Rendered images only when asked for (their pixel noise on stream 4).
+    if (cfg.images.enabled) channels_.back().imaging.emplace(cfg.images, cfg.sensor, DeriveSeed(base, 4));
     friction_switching_ = friction_switching_ || channels_.back().friction.switching();
   }
   health_px_.resize(2 * static_cast<size_t>(n_) * channels_.size());
@@ -269,6 +271,13 @@ void RailRun::RecordFrame(double t, double tf) {
   }
   const double height = sim_->BodyPos(im_.slider_body)[2] - RailLayout::kAxisHeight;
   recorder_->Frame(tf, readings, gross_, height, {arm_.x_m, arm_.z_m});
+  for (size_t k = 0; k < channels_.size(); ++k) {
+    // The camera's image of the frame and the blob pipeline's pins (images.enabled).
+    Channel& ch = channels_[k];
+    if (!ch.imaging) continue;
+    const ImageReading& image = ch.imaging->Capture(ch.sensor.clean_px(), ch.sensor.reading().pos_m);
+    recorder_->Images(k, image, c_.sensor.width_px, c_.sensor.height_px);
+  }
   TrackIncipient(t);
   CheckPlausible(t);
 }

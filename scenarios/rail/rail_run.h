@@ -21,6 +21,7 @@
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
 #include "sensors/friction_law.h"
+#include "sensors/image_pipeline.h"
 #include "sensors/run_recorder.h"
 #include "sensors/tactile_sensor.h"
 #include "sensors/labels.h"
@@ -100,6 +101,7 @@ class RailRun {
     FrictionLaw friction;
     std::vector<std::uint8_t> slid_before_gross;   // per pin: slid between the retraction and gross slip
     std::vector<std::uint8_t> contact_at_retract;  // per pin: in contact when the retraction started
+    std::optional<SensorImagePipeline> imaging;    // rendered frames and blob tracking (images.enabled)
   };
   void AddChannels(const RailScenarioConfig& cfg, const Draws& draws);
   void InitRecord(RunRecord& rec);

@@ -42,8 +42,8 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
   const DatasetReader old_file(kFixture), now(P("now.h5"));
   EXPECT_EQ(old_file.header().layout_version, 1);
   EXPECT_EQ(now.header().layout_version, 2);
-  // The same config; this version lists the scene's sensors too (the one default TacTip)
-  // and has the gel field's keys.
+  // The same config; this version has the gel field's keys, adds the images section (off, at
+  // its defaults) and lists the scene's sensors (the one default TacTip).
   std::string now_yaml = now.header().config_yaml;
   for (const std::string line :
        {"  marker_model: \"pins\"\n", "  gel_flow_depth_mm: 2.5\n", "  gel_squeeze_mm: 0.5\n"}) {
@@ -51,7 +51,11 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
     ASSERT_NE(at, std::string::npos) << line;
     now_yaml.erase(at, line.size());
   }
-  EXPECT_EQ(old_file.header().config_yaml + "sensors:\n  - name: \"tactip\"\n    offset_y_mm: 0\n", now_yaml);
+  const std::string images =
+      "images:\n  enabled: false\n  pin_tip_radius_mm: 0.5\n  skin_grey: 25\n  pin_grey: 225\n"
+      "  rim_falloff_power: 4\n  blur_sigma_px: 1\n  noise_grey: 2\n  threshold_min: 60\n  threshold_max: 190\n"
+      "  threshold_step: 32\n  min_blob_area_px: 12\n  max_blob_area_px: 2500\n  gate_px: 10\n";
+  EXPECT_EQ(old_file.header().config_yaml + images + "sensors:\n  - name: \"tactip\"\n    offset_y_mm: 0\n", now_yaml);
   ASSERT_EQ(old_file.run_indices(), now.run_indices());
   for (const int k : now.run_indices()) {
     SCOPED_TRACE("run " + std::to_string(k));

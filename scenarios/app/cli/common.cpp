@@ -48,6 +48,12 @@ void ConfigArgs::AddSkin(CLI::App* c, const std::string& help) {
   c->add_option("--skin", skin, help)->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
 }
 
+void ConfigArgs::AddImages(CLI::App* c) {
+  c->add_flag("--images", images,
+              "Shortcut for --set images.enabled=true: render every sensor's camera frames, run the blob pipeline on "
+              "them and store images, pins/detected_px and pins/detected_valid (see 'tactip config rail', images.*).");
+}
+
 void ConfigArgs::AddAutoTimestep(CLI::App* c) {
   c->add_flag("--auto-timestep", auto_timestep,
               "Choose sim.timestep_s: the largest step that is stable for every timestep-limiting mode (damping "
@@ -83,6 +89,7 @@ ConfigSource ConfigArgs::Source() const {
   if (!skin.empty()) src.overrides = SkinPresetOverrides(skin);
   if (!std::isnan(speed_mm_s)) src.overrides.push_back(fmt::format("rail.retract_speed_mm_s={}", speed_mm_s));
   if (!stimulus.empty()) src.overrides.push_back("rail.stimulus=" + stimulus);
+  if (images) src.overrides.push_back("images.enabled=true");
   src.overrides.insert(src.overrides.end(), sets.begin(), sets.end());
   return src;
 }

@@ -28,6 +28,7 @@ struct ConfigArgs {
   std::string stimulus;            ///< --stimulus
   std::string skin;                ///< --skin preset
   bool auto_timestep = false;      ///< --auto-timestep
+  bool images = false;             ///< --images
 
   /// Registers the options on `c`, with the scenario as a required positional unless
   /// `with_scenario` is false.
@@ -36,9 +37,11 @@ struct ConfigArgs {
   void AddFileAndSets(CLI::App* c, const std::string& config_help, const std::string& set_help);
   /// Registers --skin on `c`, with this help text.
   void AddSkin(CLI::App* c, const std::string& help);
+  /// Registers --images on `c` (shorthand for --set images.enabled=true).
+  void AddImages(CLI::App* c);
   /// Registers --auto-timestep on `c`.
   void AddAutoTimestep(CLI::App* c);
-  /// The config source: file, skin preset, shortcuts, then --set in order.
+  /// The config source: file, skin preset, shortcuts (--images among them), then --set in order.
   ConfigSource Source() const;
 };
 

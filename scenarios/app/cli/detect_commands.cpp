@@ -151,6 +151,7 @@ int RunSpeedStudy(const std::vector<std::string>& scenes, const std::vector<std:
 // Options of the detector subcommands (owned by the returned closure).
 struct DetectArgs {
   std::string kind, kernel = "rbf", data, runs, out, model, sensor;
+  std::string pins = "camera";  // --pins: camera or detected
   TrainArgs train;
   int window = 5, count_thr = 4;
   double speed_thr = 0.2;
@@ -168,6 +169,14 @@ struct DetectArgs {
   int repeats = 1;
   std::vector<std::string> speed_scenes;
 };
+
+// Registers --pins on `c` into `pins`.
+void AddPinsOption(CLI::App* c, std::string& pins) {
+  c->add_option("--pins", pins,
+                "Pin positions of an HDF5 dataset: camera (pins/pos_px, the camera model; default) or detected "
+                "(pins/detected_px, the blob pipeline on rendered images: generate --images).")
+      ->check(CLI::IsMember({"camera", "detected"}));
+}
 
 // The detector `kind` (threshold, logreg, svm-linear or svm-rbf) trained on `data`.
 std::unique_ptr<Detector> TrainDetector(const std::string& kind, const std::vector<LabeledRun>& data,
@@ -190,7 +199,7 @@ int RunTrain(const DetectArgs& s, const CLI::App* train, const std::vector<int>&
   CheckOutputsAreNotInputs({{"--out", s.out}}, {{"--data", s.data}});
   const TrainOptions opts = s.train.Options();
   CheckWritableLocation(s.out);
-  const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame, s.sensor);
+  const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame, s.sensor, ParsePinSource(s.pins));
   const std::string kind = s.kind == "svm" ? "svm-" + s.kernel : s.kind;
   if (kind != "threshold") s.train.CheckFolds(train, data.size());  // only the others cross-validate
   const std::unique_ptr<Detector> det = TrainDetector(kind, data, opts);
@@ -217,7 +226,7 @@ int RunDetect(const DetectArgs& s, const std::vector<int>& runs) {
   }
   const bool incipient = det->name() == "incipient";
   det = WithResponse(std::move(det), s.response);
-  const std::vector<LabeledRun> data = LoadFrames(s.data, runs, s.sensor);
+  const std::vector<LabeledRun> data = LoadFrames(s.data, runs, s.sensor, ParsePinSource(s.pins));
   size_t frames = 0;
   for (const auto& r : data) frames += r.frames.size();
   WriteFileAtomic(s.out, DecisionsCsv(*det, data, incipient, s.contact_measure));
@@ -296,6 +305,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
   train->add_option("--kernel", s.kernel, "SVM kernel for 'svm': rbf (Gaussian, default) or linear.")
       ->check(CLI::IsMember({"rbf", "linear"}));
   AddSensorOption(train, s.sensor);
+  AddPinsOption(train, s.pins);
   s.train.Add(train);
 
   eval = app.add_subcommand("evaluate", "Score a trained model on runs of a dataset (metrics table).");
@@ -311,6 +321,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
   eval->add_flag("--score-onset-frame", s.score_onset_frame,
                  "Score the frame whose velocity spans the onset as slip (default: not scored).");
   AddSensorOption(eval, s.sensor);
+  AddPinsOption(eval, s.pins);
 
   detect = app.add_subcommand(
       "detect", "Run a detector over recorded frames (HDF5 dataset or real-TacTip CSV) and write its decisions.");
@@ -323,6 +334,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
       ->check(NonEmpty("a .h5 dataset or a .csv recording"));
   detect->add_option("--runs", s.runs, "Runs of an HDF5 dataset (default: all).")->check(NonEmpty("runs, e.g. 0-19"));
   AddSensorOption(detect, s.sensor);
+  AddPinsOption(detect, s.pins);
   detect->add_option("--out", s.out, "Output CSV: run,frame,time_s,slip (and n_slipping for incipient).")
       ->required()
       ->check(NonEmpty("a file name"));
@@ -391,7 +403,7 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     if (*eval) {
       std::unique_ptr<Detector> det = WithResponse(LoadDetector(s->model), s->response);
       const Evaluation e =
-          Evaluate(*det, LoadDatasetRuns(s->data, runs, s->score_onset_frame, s->sensor), s->train.n_slip);
+          Evaluate(*det, LoadDatasetRuns(s->data, runs, s->score_onset_frame, s->sensor, ParsePinSource(s->pins)), s->train.n_slip);
       std::printf("%s", FormatEvaluation(e, s->per_run).c_str());
       return 0;
     }

@@ -17,6 +17,7 @@
 #include "scenarios/app/cli/scenario_commands.h"
 #include "scenarios/app/cli/stability_commands.h"
 #include "scenarios/app/cli/study_commands.h"
+#include "scenarios/app/cli/track_command.h"
 #include "scenarios/app/viewer/view_command.h"
 #include "scenarios/rail.h"
 #include "sim/base/errors.h"
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
       tactip::cli::AddDetectorCommands(app, &g_stop),
       tactip::cli::AddRunCommands(app, &g_stop),
       tactip::cli::AddPlotCommand(app),
+      tactip::cli::AddTrackCommand(app),
       tactip::cli::AddViewCommand(app),
   };
   try {

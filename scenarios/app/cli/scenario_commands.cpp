@@ -136,6 +136,7 @@ std::function<int()> AddScenarioCommands(CLI::App& app, const std::atomic<bool>*
   auto* gen = app.add_subcommand("generate", "Simulate runs of a scenario and write a labelled HDF5 dataset.");
   a->config.Add(gen);
   a->config.AddAutoTimestep(gen);
+  a->config.AddImages(gen);
   gen->add_option("--runs", a->runs, "Number of runs (default 4).")->check(CLI::Range(1, 100000));
   AddSeedOption(gen, a->seed, "Master seed; run i derives its own seed from it (default 1).");
   gen->add_option("--out", a->out, "Output HDF5 file (default SCENARIO.h5); written atomically.")

@@ -14,6 +14,7 @@
 #include "scenarios/marker_checks.h"
 #include "scenarios/incipient_report.h"
 #include "scenarios/signatures/signature_report.h"
+#include "scenarios/tracking_report.h"
 #include "scenarios/slip_data.h"
 #include "scenarios/sweep.h"
 #include "sim/base/files.h"
@@ -142,6 +143,27 @@ int RunReport(const StudyArgs& a) {
   return 0;
 }
 
+// tactip report tracking: the blob pipeline's detection error per run and sensor, and per sensor.
+int RunTrackingReport(const StudyArgs& a) {
+  CheckSensorOption(a.report_path, a.report_sensor);
+  const DatasetReader reader(a.report_path);
+  const RailScenarioConfig stored = StoredRailConfig(reader.header());
+  std::vector<TrackingFigures> rows, totals;
+  for (int idx : reader.run_indices()) {
+    const RunRecord run = reader.ReadRun(idx);
+    for (const SensorRecord& s : run.sensors) {
+      if (!a.report_sensor.empty() && s.name != a.report_sensor) continue;
+      rows.push_back(AnalyzeTracking(s, idx, stored.sensor, stored.images.pin_tip_radius_mm, a.report_path));
+      // Each sensor's total over the runs, in sensor order.
+      auto total = std::find_if(totals.begin(), totals.end(), [&](const TrackingFigures& t) { return t.sensor == s.name; });
+      if (total == totals.end()) total = totals.insert(totals.end(), TrackingFigures{s.name});
+      total->Add(rows.back());
+    }
+  }
+  std::printf("%s", FormatTrackingReport(rows, totals).c_str());
+  return 0;
+}
+
 // One progress line per finished design.
 void PrintDesignProgress(int done, int total, const SweepDesignResult& r) {
   std::string d;
@@ -219,17 +241,20 @@ CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
   return c;
 }
 
-// Registers `tactip report incipient|signatures` and their options.
+// Registers `tactip report incipient|signatures|tracking` and their options.
 CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
   auto* c = app.add_subcommand("report",
                                "Per-run figures of a dataset. incipient: ground-truth lead times, first-slipping "
                                "pins, internal vs external tracking, and the incipient detector's alarms. "
                                "signatures: the hardware's gross- and incipient-slip signatures (spike width and "
                                "peak, co-linearity, contact loss, visibility, amplitudes, alarm lead, first-slipping "
-                               "sector, marker agreement) beside the real TacTip's values, with pass/fail.");
-  c->add_option("what", a.report_what, "incipient or signatures")
+                               "sector, marker agreement) beside the real TacTip's values, with pass/fail. tracking: "
+                               "the blob pipeline's detection error.");
+  c->add_option("what", a.report_what,
+                "incipient, signatures, or tracking: the blob pipeline's pins (generate --images) against the "
+                "projected truth per run and sensor (share within 1 px, RMS and largest error, misses)")
       ->required()
-      ->check(CLI::IsMember({"incipient", "signatures"}));
+      ->check(CLI::IsMember({"incipient", "signatures", "tracking"}));
   c->add_option("file", a.report_path, "HDF5 dataset written by 'tactip generate'.")
       ->required()
       ->check(NonEmpty("an HDF5 dataset"));
@@ -275,7 +300,7 @@ std::function<int()> AddStudyCommands(CLI::App& app, const std::atomic<bool>* st
       }
       return rc;
     }
-    if (*report) return RunReport(*a);
+    if (*report) return a->report_what == "tracking" ? RunTrackingReport(*a) : RunReport(*a);
     if (*sweep) return RunSweepCommand(*a, stop);
     return -1;
   };

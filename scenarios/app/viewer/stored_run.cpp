@@ -14,11 +14,7 @@ namespace {
 // The stored config text applied to the defaults (it holds every key), and checked.
 RailScenarioConfig StoredConfig(const std::string& path, const DatasetHeader& header) {
   try {
-    RailFamily(FindScenario(header.scenario));
-    RailScenarioConfig cfg;
-    ApplyFlat(cfg, FlattenYaml(header.config_yaml, "its root attribute config_yaml"));
-    ValidateConfig(cfg);
-    return cfg;
+    return StoredRailConfig(header);
   } catch (const InputError& e) {
     throw InputError(fmt::format("--replay {}: {}", path, e.what()));
   }
