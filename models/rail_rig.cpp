@@ -92,6 +92,14 @@ mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, con
       .Set("gravity", V3(0, 0, gravity_z));
   const ContactBudget budget = SceneContactBudget(sim, n_collidable);
   root.Add("size").SetInt("nconmax", budget.nconmax).SetInt("njmax", budget.njmax).SetInt("nuser_jnt", 1);
+  const bool post_pass = sim.noslip_iterations > 0;
+  if (post_pass && sim.free_sliding_speed_mm_s > 0.0) {
+    root.Add("custom")
+        .Add("numeric")
+        .Set("name", kFreeSlidingNumeric)
+        .SetInt("size", 1)
+        .Set("data", std::vector<double>{sim.free_sliding_speed_mm_s * 1e-3});
+  }
   if (exact_noslip) {
     // tactip's friction pass runs outside MuJoCo (tactip's Simulation reads this numeric);
     // a plain MuJoCo program loading this file runs without it, so its contacts creep.

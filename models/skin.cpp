@@ -46,6 +46,11 @@ void ContactConfig::ValidateRules() const {
   if (impedance_min > impedance) {
     FailRule("contact.impedance_min", impedance_min, fmt::format("must be <= contact.impedance = {}", impedance));
   }
+  if (breakaway_ratio < kinetic_ratio) {
+    FailRule("contact.breakaway_ratio", breakaway_ratio,
+             fmt::format("must be >= contact.kinetic_ratio = {} (friction drops to it at breakaway, then on to kinetic)",
+                         kinetic_ratio));
+  }
 }
 
 void SkinConfig::ValidateRules() const {

@@ -2,6 +2,7 @@
 // The TacTip skin as a pin lattice: geometry of the pins on the dome, the mechanical
 // parameters derived from materials, and the MJCF part that carries them.
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -143,6 +144,7 @@ struct ContactConfig {
   double friction_jitter = 0.05;    ///< per-run relative perturbation of the friction (uniform +-)
   double pin_friction_spread = 0.0; ///< per-pin relative perturbation of the friction (uniform +-)
   double weakening_speed_mm_s = 0.0;///< velocity-weakening scale v_c (0 = switch at the slip tolerance)
+  double breakaway_ratio = 1.0;     ///< coefficient right after breakaway / static (weakening from there)
   double timeconst_s = 0.004;       ///< contact softness time constant
   double impedance = 0.99;          ///< contact impedance d (solimp dmax), closer to 1 = harder
   double impedance_min = 0.5;       ///< impedance at zero penetration (solimp dmin)
@@ -171,6 +173,12 @@ struct ContactConfig {
       "Velocity weakening: a pin sliding at speed v has mu_k + (mu_s - mu_k) / (1 + v / v_c). 0 switches a pin "
       "to mu_k as soon as it slides faster than labels.slip_speed_m_s.",
       Bounds::Closed(0.0, 1000.0));
+    v("breakaway_ratio", breakaway_ratio, "",
+      "With velocity weakening: a pin that breaks away (starts to slide) drops at once to breakaway_ratio * "
+      "friction and weakens from there, mu_k + (mu_b - mu_k) / (1 + v / v_c); a pin that is not sliding weakens "
+      "from the static value. 1 = no sudden drop (the weakening is continuous from rest). Between "
+      "kinetic_ratio and 1.",
+      Bounds::LeftOpen(0.0, 1.0));
     v("timeconst_s", timeconst_s, "s",
       "MuJoCo contact time constant (solref). Must be >= 2 timesteps; with impedance 0.99 the contact "
       "is ~30x stiffer than a pin's gel spring, so the gel, not the solver, sets the indentation.",
@@ -201,12 +209,14 @@ struct ContactConfig {
   std::vector<double> Solimp() const {
     return {impedance_min, impedance, impedance_width_mm * 1e-3, 0.5, 2.0};
   }
-  /// Velocity-weakened coefficient of a pin with static coefficient mu_s sliding at
-  /// slip_speed_m_s (needs weakening_speed_mm_s > 0): mu_s at rest, kinetic_ratio * mu_s
-  /// when fast, halfway at the weakening speed.
-  double WeakenedFriction(double mu_s, double slip_speed_m_s) const {
+  /// Velocity-weakened coefficient of a pin with static coefficient mu_s slipping at
+  /// slip_speed_m_s (needs weakening_speed_mm_s > 0): kinetic_ratio * mu_s when fast;
+  /// towards rest, mu_s for a pin that is not sliding and breakaway_ratio * mu_s for one
+  /// that has broken away; halfway at the weakening speed.
+  double WeakenedFriction(double mu_s, double slip_speed_m_s, bool broken_away = false) const {
     const double mu_k = kinetic_ratio * mu_s;
-    return mu_k + (mu_s - mu_k) / (1.0 + slip_speed_m_s / (weakening_speed_mm_s * 1e-3));
+    const double mu_0 = broken_away ? std::max(mu_k, breakaway_ratio * mu_s) : mu_s;
+    return mu_k + (mu_0 - mu_k) / (1.0 + slip_speed_m_s / (weakening_speed_mm_s * 1e-3));
   }
 };
 

@@ -27,13 +27,16 @@ void FrictionLaw::Update(const std::vector<PinContactSample>& samples, const std
   const bool weakening = contact_.weakening_speed_mm_s > 0.0;
   for (size_t i = 0; i < pin_geom_.size(); ++i) {
     if (pin_geom_[i] < 0) continue;
+    // A pin slides from the step it is labelled slipping until it sticks again (or leaves
+    // contact).
+    const bool now = pin_slip[i] || (sliding_[i] && samples[i].in_contact &&
+                                     samples[i].slip_speed_m_s > slip_speed_m_s_);
     if (weakening) {
-      // Velocity weakening from this step's slip speed.
-      mu_cur_[i] = contact_.WeakenedFriction(mu_pin_[i], samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0);
+      // Velocity weakening from this step's slip speed (from the breakaway value once sliding).
+      sliding_[i] = now ? 1 : 0;
+      mu_cur_[i] = contact_.WeakenedFriction(mu_pin_[i], samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0, now);
     } else {
-      // Static -> kinetic when a pin slides, back when it sticks (or leaves contact).
-      const bool now = pin_slip[i] || (sliding_[i] && samples[i].in_contact &&
-                                       samples[i].slip_speed_m_s > slip_speed_m_s_);
+      // Static -> kinetic when a pin slides, back when it sticks.
       if (now == static_cast<bool>(sliding_[i])) continue;
       sliding_[i] = now ? 1 : 0;
       mu_cur_[i] = now ? contact_.kinetic_ratio * mu_pin_[i] : mu_pin_[i];

@@ -1,5 +1,7 @@
 #include "sim/simulation.h"
 
+#include "sim/friction_reference.h"
+
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
@@ -131,6 +133,8 @@ Simulation::Simulation(const CompiledModel& model)
     fs.presliding_m = m->numeric_data[m->numeric_adr[id] + 1];
     friction_ = std::make_unique<FrictionPass>(m, fs);
   }
+  const int free = mj_name2id(m, mjOBJ_NUMERIC, kFreeSlidingNumeric);
+  if (free >= 0 && m->numeric_size[free] >= 1) free_sliding_speed_m_s_ = m->numeric_data[m->numeric_adr[free]];
 }
 
 Simulation::~Simulation() = default;
@@ -142,13 +146,19 @@ void Simulation::SetControl(int actuator, double value) { data_->ctrl[actuator] 
 void Simulation::Forward() {
   const double t = data_->time;
   mj_forward(model_.raw(), data_.get());
-  if (plane_.active()) {
-    // Solve the constraints again with the friction rows across the pressing axes.
-    plane_.Apply(model_.raw(), data_.get());
+  if (plane_.active() || free_sliding_speed_m_s_ > 0.0) {
+    // Solve the constraints again with the friction rows across the pressing axes and
+    // without their velocity target.
+    PrepareConstraints();
     mj_fwdConstraint(model_.raw(), data_.get());
   }
   if (friction_) last_friction_ = friction_->Apply(model_.raw(), data_.get());
   CheckWarnings(t);
+}
+
+void Simulation::PrepareConstraints() {
+  plane_.Apply(model_.raw(), data_.get());
+  if (free_sliding_speed_m_s_ > 0.0) DropFrictionReference(model_.raw(), data_.get(), free_sliding_speed_m_s_);
 }
 
 void Simulation::Step() {
@@ -162,7 +172,7 @@ void Simulation::Step() {
     StepProfiled();
   } else {
     mj_step1(m, d);
-    plane_.Apply(m, d);
+    PrepareConstraints();
     if (!friction_) {
       mj_step2(m, d);
     } else {
@@ -195,7 +205,7 @@ void Simulation::StepProfiled() {
   lap(t0, profile_.step1_s);
   profile_.nefc_sum += d->nefc;
   profile_.ncon_sum += d->ncon;
-  plane_.Apply(m, d);
+  PrepareConstraints();
   lap(t0, profile_.plane_s);
   mj_fwdActuation(m, d);
   mj_fwdAcceleration(m, d);

@@ -149,12 +149,14 @@ class Simulation {
   void AuditEnergy();
   double SlipSpeed(int contact);
   void StepProfiled();
+  void PrepareConstraints();  // friction plane and friction reference, between position stage and solve
   const CompiledModel& model_;
   std::unique_ptr<mjData_, MjDataDeleter> data_;
   std::vector<double> jac_a_, jac_b_;  // 3 x nv scratch for contact-point Jacobians
   std::vector<double> efc_vel_;        // constraint-space velocity J * qvel (njmax)
   bool have_efc_vel_ = false;          // efc_vel_ holds this read-out's velocities
   FrictionPlane plane_;                // friction rows across the pins' pressing axes
+  double free_sliding_speed_m_s_ = 0.0;  // faster contacts: no friction velocity target in the solve (0: off)
   std::array<int, 8> warn_seen_{};
   std::unique_ptr<FrictionPass> friction_;  // null: MuJoCo's own noslip (or none)
   FrictionPassStats last_friction_;

@@ -29,6 +29,36 @@ TEST_F(SkinTest, DefaultsAreValid) {
   EXPECT_NO_THROW(ValidateConfig(c));
 }
 
+TEST(ContactFrictionTest, BreakawayDropsASlidingPinAtOnceThenWeakensToKinetic) {
+  ContactConfig c;
+  c.kinetic_ratio = 0.5;
+  c.weakening_speed_mm_s = 10.0;
+  c.breakaway_ratio = 0.8;
+  const double mu_s = 1.0, mu_b = 0.8, mu_k = 0.5;
+  // A pin that has not broken away weakens from the static value, one that has from mu_b.
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 0.0, false), mu_s, kTol);
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 0.0, true), mu_b, kTol);
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 10e-3, true), 0.5 * (mu_b + mu_k), kTol);
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 10.0, true), mu_k, 1e-3);
+  // breakaway_ratio = 1 (the default) is the continuous law.
+  c.breakaway_ratio = 1.0;
+  EXPECT_NEAR(c.WeakenedFriction(mu_s, 3e-3, true), c.WeakenedFriction(mu_s, 3e-3, false), kTol);
+}
+
+TEST(ContactFrictionTest, BreakawayBelowKineticIsRefusedNamingBothKeys) {
+  ContactConfig c;
+  c.kinetic_ratio = 0.6;
+  c.breakaway_ratio = 0.5;
+  try {
+    c.ValidateRules();
+    FAIL() << "accepted breakaway_ratio < kinetic_ratio";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("contact.breakaway_ratio = 0.5"), std::string::npos) << what;
+    EXPECT_NE(what.find("contact.kinetic_ratio = 0.6"), std::string::npos) << what;
+  }
+}
+
 TEST(ContactFrictionTest, VelocityWeakeningRunsFromStaticAtRestToKineticWhenFast) {
   ContactConfig c;
   c.kinetic_ratio = 0.6;
