@@ -3,12 +3,10 @@
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
-#include <cmath>
 
 namespace tactip {
 
-void DropFrictionReference(const mjModel* m, mjData* d, double sliding_speed_m_s) {
-  (void)m;
+void DropFrictionReference(mjData* d, double sliding_speed_m_s) {
   for (int i = 0; i < d->nefc; ++i) {
     if (d->efc_type[i] != mjCNSTR_CONTACT_ELLIPTIC) continue;
     const int dim = d->contact[d->efc_id[i]].dim;

@@ -15,7 +15,6 @@
 // share the acceleration balance, so their target becomes zero tangential acceleration
 // and the normal forces of sliding contacts stay what the contact's penetration gives.
 
-struct mjModel_;
 struct mjData_;
 
 namespace tactip {
@@ -26,6 +25,6 @@ namespace tactip {
 /// pins (mm/s), whose light contacts flickered open and shut without it (stability suite,
 /// v2 cases, at thresholds of 1 and 10 mm/s; 30 mm/s, the default, is clean). Call after
 /// the velocity stage (efc_vel) and before mj_fwdConstraint.
-void DropFrictionReference(const mjModel_* m, mjData_* d, double sliding_speed_m_s);
+void DropFrictionReference(mjData_* d, double sliding_speed_m_s);
 
 }  // namespace tactip

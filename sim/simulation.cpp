@@ -158,7 +158,7 @@ void Simulation::Forward() {
 
 void Simulation::PrepareConstraints() {
   plane_.Apply(model_.raw(), data_.get());
-  if (free_sliding_speed_m_s_ > 0.0) DropFrictionReference(model_.raw(), data_.get(), free_sliding_speed_m_s_);
+  if (free_sliding_speed_m_s_ > 0.0) DropFrictionReference(data_.get(), free_sliding_speed_m_s_);
 }
 
 void Simulation::Step() {
