@@ -3,6 +3,7 @@
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace tactip {
 
@@ -13,7 +14,8 @@ void DropFrictionReference(mjData* d, double sliding_speed_m_s) {
     double v2 = 0.0;
     for (int j = 1; j < std::min(dim, 3); ++j) v2 += d->efc_vel[i + j] * d->efc_vel[i + j];
     if (v2 > sliding_speed_m_s * sliding_speed_m_s) {
-      for (int j = 1; j < dim; ++j) d->efc_aref[i + j] = 0.0;
+      const double scale = std::max(0.0, 2.0 - std::sqrt(v2) / sliding_speed_m_s);
+      for (int j = 1; j < dim; ++j) d->efc_aref[i + j] *= scale;
     }
     i += dim - 1;
   }

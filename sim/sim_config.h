@@ -14,7 +14,7 @@ namespace tactip {
 inline constexpr const char* kFrictionPassNumeric = "tactip_friction_pass";
 
 /// Name of the MJCF custom numeric holding sim.free_sliding_speed_mm_s (in m/s): contacts
-/// sliding faster lose their friction rows' velocity target in MuJoCo's solve
+/// sliding faster lose their friction rows' velocity target in MuJoCo's solve (faded out by twice it)
 /// (sim/friction_reference.h). Absent: MuJoCo's target everywhere.
 inline constexpr const char* kFreeSlidingNumeric = "tactip_free_sliding_speed";
 
@@ -34,7 +34,7 @@ struct SimConfig {
   double impratio = 10.0;          ///< friction-to-normal impedance ratio (elliptic cones)
   std::string cone = "elliptic";   ///< friction cone
   bool check_stability = true;     ///< refuse timesteps above the stiffest mode's limit
-  double free_sliding_speed_mm_s = 30.0;  ///< contacts faster than this: no friction velocity target in the solve
+  double free_sliding_speed_mm_s = 30.0;  ///< faster contacts: friction velocity target faded out (none at 2x)
 
   template <class V>
   void Visit(V& v) {
@@ -70,8 +70,8 @@ struct SimConfig {
       "Refuse a timestep above 0.9 x the stability limit of the stiffest explicit spring mode "
       "(see MaxStableTimestep). Turn off only to study the instability itself.");
     v("free_sliding_speed_mm_s", free_sliding_speed_mm_s, "mm/s",
-      "With a friction post-pass (noslip_iterations > 0): contacts sliding faster than this get no friction "
-      "velocity target in MuJoCo's solve, whose elliptic cone otherwise turns it into a normal force that grows "
+      "With a friction post-pass (noslip_iterations > 0): contacts sliding faster than this lose their friction "
+      "velocity target in MuJoCo's solve (faded out linearly, none at twice this speed), whose elliptic cone otherwise turns it into a normal force that grows "
       "with the sliding speed and makes a sliding object's contacts chatter (rail, gross slip: total normal force "
       "0.02-1.2 N, 1-31 pins in contact, against a steady 0.8-0.97 N and 19 pins without it). 30 mm/s: above "
       "the quasi-static partial slip of fingerprint skins (mm/s), below gross slip. 0 keeps MuJoCo's target "
