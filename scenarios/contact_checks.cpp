@@ -237,73 +237,110 @@ void CheckDomeSkin(const SkinConfig& skin) {
   }
 }
 
-DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
-  ContactRigSpec spec = opts.rig;
-  CheckDomeSkin(spec.skin);
-  spec.max_depth_m = opts.depth_mm * 1e-3;
-  PressedRig rig(spec, spec.max_depth_m);
-  rig.Press();
-  const PinLattice& lattice = rig.lattice;
-  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
+namespace {
+
+// What the dome check needs from the press: each pin's normal load and contact, its
+// distance from the axis in the plate plane, and the contact radius.
+struct DomePress {
+  std::vector<double> normal_N;
+  std::vector<std::uint8_t> contact;
+  std::vector<double> r_pin;  // m
+  double a_m = 0.0;           // contact radius
+};
+
+// Reads the pressed rig; sets out's pins_in_contact, mu_P_N and contact_radius_mm. The
+// contact radius comes from a least-squares fit of the parabolic pressure N_i = alpha -
+// beta r_i^2 (the gel columns are a Winkler foundation): a^2 = alpha / beta.
+DomePress ReadDomePress(const PressedRig& rig, const ContactRigSpec& spec, DomeCheck& out) {
   const int N = rig.n;
-  const double mu = spec.contact.friction;
   const std::vector<GeomContact>& contacts = rig.contacts;
-  DomeCheck out;
-  double sum_n = 0.0;
-  for (const auto& c : contacts) {
-    if (!c.in_contact) continue;
-    ++out.pins_in_contact;
-    sum_n += c.normal_N;
-  }
-  if (out.pins_in_contact == 0) throw SimulationError("dome check: no pin touches the plate after the press");
-  out.mu_P_N = mu * sum_n;
-  // The press's normal loads and contact set, for the quasi-static solution.
-  std::vector<double> press_N(N);
-  std::vector<std::uint8_t> press_contact(N);
-  for (int i = 0; i < N; ++i) {
-    press_contact[i] = contacts[i].in_contact ? 1 : 0;
-    press_N[i] = contacts[i].in_contact ? contacts[i].normal_N : 0.0;
-  }
-  // Pins' distances from the axis in the plate plane, and the contact radius from a
-  // least-squares fit of the parabolic pressure N_i = alpha - beta r_i^2 (the gel columns
-  // are a Winkler foundation): a^2 = alpha / beta.
+  DomePress press;
+  press.normal_N.assign(N, 0.0);
+  press.contact.assign(N, 0);
+  press.r_pin.assign(N, 0.0);
   const double r_out = spec.skin.OuterRadiusMm() * 1e-3;
-  std::vector<double> r_pin(N);
-  double s1 = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  double sum_n = 0.0, s1 = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (int i = 0; i < N; ++i) {
-    r_pin[i] = r_out * std::sin(lattice.pins[i].polar_rad);
+    press.r_pin[i] = r_out * std::sin(rig.lattice.pins[i].polar_rad);
     if (!contacts[i].in_contact) continue;
-    const double x = r_pin[i] * r_pin[i], y = contacts[i].normal_N;
+    ++out.pins_in_contact;
+    sum_n += contacts[i].normal_N;
+    press.contact[i] = 1;
+    press.normal_N[i] = contacts[i].normal_N;
+    const double x = press.r_pin[i] * press.r_pin[i], y = contacts[i].normal_N;
     s1 += 1;
     sx += x;
     sy += y;
     sxx += x * x;
     sxy += x * y;
   }
+  if (out.pins_in_contact == 0) throw SimulationError("dome check: no pin touches the plate after the press");
+  out.mu_P_N = spec.contact.friction * sum_n;
   const double slope = (s1 * sxy - sx * sy) / (s1 * sxx - sx * sx);
   const double icpt = (sy - slope * sx) / s1;
   if (!(slope < 0.0) || !(icpt > 0.0)) throw SimulationError("dome check: the pressure does not fall off from the apex");
-  const double a_m = std::sqrt(-icpt / slope);
-  out.contact_radius_mm = a_m * 1e3;
-  // Coupling length: with edges of every direction, sum_e k (l_e . grad u)^2 averages to
-  // (1/2) sum_e k l_e^2 |grad u|^2 over the lattice's area, against sum_i k_tip u^2.
+  press.a_m = std::sqrt(-icpt / slope);
+  out.contact_radius_mm = press.a_m * 1e3;
+  return press;
+}
+
+// Coupling length: with edges of every direction, sum_e k (l_e . grad u)^2 averages to
+// (1/2) sum_e k l_e^2 |grad u|^2 over the lattice's area, against sum_i k_tip u^2.
+double CouplingLengthMm(const PinLattice& lattice, const SkinMechanics& mech, double r_out_m) {
   double edge_sum = 0.0;
   for (const auto& e : lattice.neighbours) {
     const auto& p = lattice.pins[e[0]].normal;
     const auto& q = lattice.pins[e[1]].normal;
-    const double l = r_out * std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+    const double l = r_out_m * std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
     edge_sum += mech.k_couple_N_m * l * l;
   }
-  out.coupling_length_mm = 1e3 * std::sqrt(edge_sum / (2.0 * N * mech.k_tip_N_m));
+  return 1e3 * std::sqrt(edge_sum / (2.0 * static_cast<double>(lattice.pins.size()) * mech.k_tip_N_m));
+}
 
-  // Shear ramp until every contacting pin slides (or well past the Coulomb load).
-  const double v = opts.shear_speed_mm_s * 1e-3;
-  const double u_limit = 4.0 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
-  const double y0 = rig.PlateY(), t0 = rig.t;
-  LabelConfig labels;
+// One sample of the shear ramp: load ratio, stick/slip counts and the stick boundary's
+// bracket; records each pin's load ratio at its first slip.
+DomeSample SampleDome(const PressedRig& rig, const DomePress& press, double mu, std::vector<double>& first_slip_q,
+                      bool* gross_slip) {
+  const int N = rig.n;
+  static const LabelConfig labels;
   std::vector<PinContactSample> samples(N);
   std::vector<std::uint8_t> pin_contact(N), pin_slip(N);
-  std::vector<double> first_slip_q(N, std::nan(""));
+  double q = 0.0, p = 0.0;
+  for (int i = 0; i < N; ++i) {
+    const GeomContact& c = rig.contacts[i];
+    const auto [fty, ftz] = TangentialYZ(c);
+    samples[i] = {c.in_contact, c.slip_speed_m_s, c.in_contact ? c.cone_use : 0.0};
+    q += fty;
+    p += c.normal_N;
+  }
+  const FrameLabels fl = LabelFrame(samples, labels, pin_contact.data(), pin_slip.data());
+  DomeSample s;
+  s.q_ratio = std::abs(q) / (mu * p);
+  s.contacting = fl.n_contact;
+  s.sticking = fl.n_contact - fl.n_slip;
+  s.c_ratio = fl.n_contact > 0 ? std::sqrt(static_cast<double>(s.sticking) / fl.n_contact) : 0.0;
+  s.c_hi = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < N; ++i) {
+    if (!pin_contact[i]) continue;
+    if (pin_slip[i]) {
+      s.c_hi = std::min(s.c_hi, press.r_pin[i] / press.a_m);
+      if (std::isnan(first_slip_q[i])) first_slip_q[i] = s.q_ratio;
+    } else {
+      s.c_lo = std::max(s.c_lo, press.r_pin[i] / press.a_m);
+    }
+  }
+  *gross_slip = fl.gross_slip;
+  return s;
+}
+
+// Shear ramp until every contacting pin slides (or well past the Coulomb load); fills
+// out.samples and out.gross_q_ratio, returns each pin's load ratio at its first slip.
+std::vector<double> ShearDome(PressedRig& rig, const DomeCheckOptions& opts, const SkinMechanics& mech,
+                              const DomePress& press, DomeCheck& out) {
+  const double v = opts.shear_speed_mm_s * 1e-3, mu = opts.rig.contact.friction;
+  const double u_limit = 4.0 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
+  const double y0 = rig.PlateY(), t0 = rig.t;
+  std::vector<double> first_slip_q(rig.n, std::nan(""));
   double next_sample = t0 + opts.sample_every_s;
   out.gross_q_ratio = std::nan("");
   while (rig.PlateY() - y0 < u_limit) {
@@ -311,84 +348,76 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
     if (rig.t < next_sample) continue;
     next_sample += opts.sample_every_s;
     rig.ReadContacts();
-    double q = 0.0, p = 0.0;
-    for (int i = 0; i < N; ++i) {
-      const GeomContact& c = contacts[i];
-      const auto [fty, ftz] = TangentialYZ(c);
-      samples[i] = {c.in_contact, c.slip_speed_m_s, c.in_contact ? c.cone_use : 0.0};
-      q += fty;
-      p += c.normal_N;
-    }
-    const FrameLabels fl = LabelFrame(samples, labels, pin_contact.data(), pin_slip.data());
-    DomeSample s;
-    s.q_ratio = std::abs(q) / (mu * p);
-    s.contacting = fl.n_contact;
-    s.sticking = fl.n_contact - fl.n_slip;
-    s.c_ratio = fl.n_contact > 0 ? std::sqrt(static_cast<double>(s.sticking) / fl.n_contact) : 0.0;
-    s.c_hi = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < N; ++i) {
-      if (!pin_contact[i]) continue;
-      if (pin_slip[i]) {
-        s.c_hi = std::min(s.c_hi, r_pin[i] / a_m);
-        if (std::isnan(first_slip_q[i])) first_slip_q[i] = s.q_ratio;
-      } else {
-        s.c_lo = std::max(s.c_lo, r_pin[i] / a_m);
-      }
-    }
-    out.samples.push_back(s);
-    if (fl.gross_slip) {
-      out.gross_q_ratio = s.q_ratio;
+    bool gross = false;
+    out.samples.push_back(SampleDome(rig, press, mu, first_slip_q, &gross));
+    if (gross) {
+      out.gross_q_ratio = out.samples.back().q_ratio;
       break;
     }
   }
-  const auto judged = [](double q) { return q >= 0.1 && q <= 0.9; };
-  const auto in_band = [&](double q, double c_lo, double c_hi) {
-    return c_lo <= c_hi + kSameRing && c_hi >= std::cbrt(1.0 - q) - opts.tolerance &&
-           c_lo <= std::pow(1.0 - q, 0.25) + opts.tolerance;
-  };
+  return first_slip_q;
+}
+
+// The Cattaneo-Mindlin-brush band for the stick radius at load ratios 0.1-0.9.
+struct DomeBand {
+  double tolerance;
+  static bool Judged(double q) { return q >= 0.1 && q <= 0.9; }
+  bool Contains(double q, double c_lo, double c_hi) const {
+    return c_lo <= c_hi + kSameRing && c_hi >= std::cbrt(1.0 - q) - tolerance &&
+           c_lo <= std::pow(1.0 - q, 0.25) + tolerance;
+  }
+};
+
+// Share of the simulated samples in the band (stick boundary bracket, and the sticking
+// count's radius).
+void JudgeSamples(const DomeBand& band, DomeCheck& out) {
   for (const auto& s : out.samples) {
-    if (!judged(s.q_ratio)) continue;
+    if (!DomeBand::Judged(s.q_ratio)) continue;
     ++out.samples_judged;
     const double cm = std::cbrt(1.0 - s.q_ratio), brush = std::pow(1.0 - s.q_ratio, 0.25);
-    if (s.c_ratio >= cm - opts.tolerance && s.c_ratio <= brush + opts.tolerance) out.between_fraction += 1.0;
-    if (in_band(s.q_ratio, s.c_lo, s.c_hi)) out.bracket_fraction += 1.0;
+    if (s.c_ratio >= cm - band.tolerance && s.c_ratio <= brush + band.tolerance) out.between_fraction += 1.0;
+    if (band.Contains(s.q_ratio, s.c_lo, s.c_hi)) out.bracket_fraction += 1.0;
   }
   if (out.samples_judged > 0) {
     out.between_fraction /= out.samples_judged;
     out.bracket_fraction /= out.samples_judged;
   }
-  // The same lattice solved exactly (quasi-static Coulomb): where the simulated releases
-  // differ from it is the dynamics' and the soft contact's doing; where both miss the band
-  // it is the lattice's mechanics.
-  const QuasiStaticShear qs =
-      SolveQuasiStaticShear(lattice, mech.k_tip_N_m, mech.k_couple_N_m, press_N, press_contact, mu, 4000,
-                            spec.sim.noslip == "exact" ? spec.contact.presliding_mm * 1e-3 : 0.0);
-  int qs_judged = 0;
+}
+
+// Share of the exact quasi-static solution's load grid in the band.
+void JudgeExact(const QuasiStaticShear& qs, const DomePress& press, const DomeBand& band, DomeCheck& out) {
+  int judged = 0;
   for (size_t g = 0; g < qs.grid_q.size(); ++g) {
     const double q = qs.grid_q[g];
-    if (!judged(q)) continue;
+    if (!DomeBand::Judged(q)) continue;
     double c_lo = 0.0, c_hi = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < N; ++i) {
-      if (!press_contact[i]) continue;
-      if (qs.StuckAt(i, qs.grid_delta_m[g])) {
-        c_lo = std::max(c_lo, r_pin[i] / a_m);
+    for (size_t i = 0; i < press.contact.size(); ++i) {
+      if (!press.contact[i]) continue;
+      if (qs.StuckAt(static_cast<int>(i), qs.grid_delta_m[g])) {
+        c_lo = std::max(c_lo, press.r_pin[i] / press.a_m);
       } else {
-        c_hi = std::min(c_hi, r_pin[i] / a_m);
+        c_hi = std::min(c_hi, press.r_pin[i] / press.a_m);
       }
     }
-    ++qs_judged;
-    if (in_band(q, c_lo, c_hi)) out.qs_bracket_fraction += 1.0;
+    ++judged;
+    if (band.Contains(q, c_lo, c_hi)) out.qs_bracket_fraction += 1.0;
   }
-  if (qs_judged > 0) out.qs_bracket_fraction /= qs_judged;
-  // Releases ring by ring (pins at one distance from the axis), simulated against exact.
+  if (judged > 0) out.qs_bracket_fraction /= judged;
+}
+
+// Releases ring by ring (pins at one distance from the axis), simulated against exact.
+void CompareRingReleases(const QuasiStaticShear& qs, const DomePress& press, const std::vector<double>& first_slip_q,
+                         DomeCheck& out) {
+  const int N = static_cast<int>(press.contact.size());
   std::vector<int> by_radius(N);
   for (int i = 0; i < N; ++i) by_radius[i] = i;
-  std::sort(by_radius.begin(), by_radius.end(), [&](int p, int q) { return r_pin[p] > r_pin[q]; });
+  std::sort(by_radius.begin(), by_radius.end(), [&](int p, int q) { return press.r_pin[p] > press.r_pin[q]; });
   for (int i : by_radius) {
-    if (!press_contact[i]) continue;
-    if (out.rings.empty() || std::abs(out.rings.back().r_over_a - r_pin[i] / a_m) > kSameRing) {
+    if (!press.contact[i]) continue;
+    const double r_over_a = press.r_pin[i] / press.a_m;
+    if (out.rings.empty() || std::abs(out.rings.back().r_over_a - r_over_a) > kSameRing) {
       DomeRing ring;
-      ring.r_over_a = r_pin[i] / a_m;
+      ring.r_over_a = r_over_a;
       out.rings.push_back(ring);
     }
     DomeRing& ring = out.rings.back();
@@ -405,9 +434,36 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
     ++out.release_pins_compared;
   }
   if (out.release_pins_compared > 0) out.release_error_mean /= out.release_pins_compared;
+}
+
+}  // namespace
+
+DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
+  ContactRigSpec spec = opts.rig;
+  CheckDomeSkin(spec.skin);
+  spec.max_depth_m = opts.depth_mm * 1e-3;
+  PressedRig rig(spec, spec.max_depth_m);
+  rig.Press();
+  const PinLattice& lattice = rig.lattice;
+  const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice);
+  DomeCheck out;
+  const DomePress press = ReadDomePress(rig, spec, out);
+  out.coupling_length_mm = CouplingLengthMm(lattice, mech, spec.skin.OuterRadiusMm() * 1e-3);
+  const std::vector<double> first_slip_q = ShearDome(rig, opts, mech, press, out);
+  const DomeBand band{opts.tolerance};
+  JudgeSamples(band, out);
+  // The same lattice solved exactly (quasi-static Coulomb): where the simulated releases
+  // differ from it is the dynamics' and the soft contact's doing; where both miss the band
+  // it is the lattice's mechanics.
+  const QuasiStaticShear qs =
+      SolveQuasiStaticShear(lattice, mech.k_tip_N_m, mech.k_couple_N_m, press.normal_N, press.contact,
+                            spec.contact.friction, 4000,
+                            spec.sim.noslip == "exact" ? spec.contact.presliding_mm * 1e-3 : 0.0);
+  JudgeExact(qs, press, band, out);
+  CompareRingReleases(qs, press, first_slip_q, out);
   // Outside-in: distance from the axis against the load at first slip.
   std::vector<double> radius, order;
-  for (int i = 0; i < N; ++i) {
+  for (int i = 0; i < rig.n; ++i) {
     if (std::isnan(first_slip_q[i])) continue;
     radius.push_back(-lattice.pins[i].polar_rad);
     order.push_back(first_slip_q[i]);
