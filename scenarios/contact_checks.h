@@ -35,6 +35,7 @@ struct BrushSample {
 
 /// Result of the brush-model check.
 struct BrushCheck {
+  std::string skin_pattern;      ///< the lattice's skin (smooth, fingerprint-v1, fingerprint-v2)
   std::vector<BrushSample> samples;
   double state_agreement = 0.0;  ///< fraction of contacting pin-samples whose state matches
   long pin_samples = 0;          ///< contacting pin-samples compared
@@ -42,8 +43,10 @@ struct BrushCheck {
   double mu_P_N = 0.0;           ///< mu times the total normal load (the gross-slip load)
   double k_t_N_m = 0.0;          ///< per-pin shear stiffness
   int pins_in_contact = 0;       ///< pins touching the plate after the press
-  /// Spearman rank correlation between each pin's normal force and the displacement at
-  /// which it first slipped (brush model: least-loaded pins slip first, so +1).
+  /// Spearman rank correlation between the displacement at which each pin first slipped
+  /// and the one at which the brush model has it slip (k_t u > mu N_i: least-loaded pins
+  /// first), both on the sample grid, so pins whose slip loads differ by less than one
+  /// sample's load step tie in both (ranking by N_i itself split such ties at random).
   double slip_order_correlation = 0.0;
 };
 

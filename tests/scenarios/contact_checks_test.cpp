@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cli_helpers.h"
 #include "scenarios/contact_checks.h"
 #include "scenarios/rail.h"
 #include "sim/simulation.h"
@@ -209,6 +210,24 @@ TEST(BrushModelTest, SpearmanHandlesTiesAndDirection) {
   // Ties share the average rank: x ranks (0.5, 0.5, 2), y ranks (0, 1, 2).
   EXPECT_NEAR(SpearmanCorrelation({1, 1, 2}, {1, 2, 3}), 0.8660254037844386, 1e-12);
   EXPECT_TRUE(std::isnan(SpearmanCorrelation({1}, {1})));
+}
+
+// `validate contact --skin S` runs the brush check on S's lattice too, with its tip
+// stiffness (gel column in series with the ridge: v1 11 N/m, not the gel's 27.9), and the
+// slip order is judged on the sample grid (v1's rings of equal load tie). A v1 dome cut to
+// its first ring keeps the run short.
+class ValidateContactCliTest : public testing::CliFolderTest {};
+
+TEST_F(ValidateContactCliTest, BrushCheckUsesTheSkinPresetsLattice) {
+  const testing::CliResult r = Run("validate contact --skin fingerprint-v1 --set skin.pattern_radius_mm=4");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("brush model (uncoupled fingerprint-v1 lattice, 7 pins in contact, k_t = 11 N/m"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("slip order follows normal force (brush order, sampled): Spearman rank correlation 1.000"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.err.find("pressing an uncoupled fingerprint-v1 lattice"), std::string::npos) << r.err;
 }
 
 }  // namespace

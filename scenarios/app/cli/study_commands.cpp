@@ -68,7 +68,10 @@ bool RunDome(const DomeCheckOptions& d, const DomeCriteria& k, const std::string
 // 1 ms, twice: with a 0.3 mm skin (membrane reach a third of the contact radius, the regime
 // of the continuum band) and as configured. Every config is checked before anything runs.
 int RunContactChecks(const ConfigArgs& c) {
-  const auto rail = LoadConfig<RailScenarioConfig>(c.config_path, c.sets);
+  // The brush check's lattice: the --skin preset (the rail default without one), then --set.
+  std::vector<std::string> sets = c.skin.empty() ? std::vector<std::string>{} : SkinPresetOverrides(c.skin);
+  sets.insert(sets.end(), c.sets.begin(), c.sets.end());
+  const auto rail = LoadConfig<RailScenarioConfig>(c.config_path, sets);
   const DomeCheckOptions configured_dome = DomeOptions(c, {});
   const DomeCheckOptions continuum_dome = [&] {
     try {
@@ -81,7 +84,8 @@ int RunContactChecks(const ConfigArgs& c) {
   o.rig.sim = rail.sim;
   o.rig.skin = rail.skin;
   o.rig.contact = rail.contact;
-  std::fprintf(stderr, "validate: pressing an uncoupled lattice and shearing it past gross slip\n");
+  std::fprintf(stderr, "validate: pressing an uncoupled %s lattice and shearing it past gross slip\n",
+               rail.skin.pattern.c_str());
   const BrushCheck bc = RunBrushCheck(o);
   constexpr double kAgreement = 0.98, kLoadError = 0.03;
   std::printf("%s", FormatBrushCheck(bc, kAgreement, kLoadError).c_str());
