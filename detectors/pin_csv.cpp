@@ -72,157 +72,190 @@ void AppendNumber(std::string& out, T v) {
   out.append(buf, p);
 }
 
-}  // namespace
+/// Reads a pin CSV: the header, then rows grouped into frames by frame number, every
+/// defect a one-line error naming the file and line.
+class PinCsvReader {
+ public:
+  explicit PinCsvReader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+    if (!in_) throw InputError("pin CSV '" + path + "': cannot open: " + std::strerror(errno));
+  }
 
-std::vector<PinFrame> ReadPinCsv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("pin CSV '" + path + "': cannot open: " + std::strerror(errno));
+  std::vector<PinFrame> Read() {
+    ReadHeader();
+    while (std::getline(in_, line_)) {
+      ++line_no_;
+      if (Trim(line_).empty()) continue;
+      const RowFields r = ParseRow();
+      AdvanceFrame(r);
+      AddPin(r);
+    }
+    if (in_.bad()) throw InputError("pin CSV '" + path_ + "': read error");
+    if (!in_frame_) throw Error(line_no_, "empty file: no data rows after the header");
+    CloseFrame();
+    return std::move(frames_);
+  }
+
+ private:
+  /// One data row's parsed fields.
+  struct RowFields {
+    long frame = 0;
+    double time = 0.0;
+    Row row{};
+  };
+
+  InputError Error(long line, const std::string& what) const { return LineError(path_, line, what); }
 
   // Header (an optional UTF-8 byte-order mark first).
-  std::string line;
-  long line_no = 0;
-  bool have_header_line = false;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
-    if (!Trim(line).empty()) {
-      have_header_line = true;
-      break;
+  void ReadHeader() {
+    bool have_header_line = false;
+    while (std::getline(in_, line_)) {
+      ++line_no_;
+      if (line_no_ == 1 && line_.rfind("\xEF\xBB\xBF", 0) == 0) line_.erase(0, 3);
+      if (!Trim(line_).empty()) {
+        have_header_line = true;
+        break;
+      }
     }
+    if (!have_header_line) throw InputError("pin CSV '" + path_ + "': empty file");
+    Split(line_, fields_);
+    static constexpr std::string_view kColumns[] = {"frame", "time_s", "pin", "x_px", "y_px", "valid"};
+    const bool header_ok = (fields_.size() == 5 || fields_.size() == 6) && [&] {
+      for (size_t c = 0; c < fields_.size(); ++c) {
+        if (fields_[c] != kColumns[c]) return false;
+      }
+      return true;
+    }();
+    if (!header_ok) {
+      throw Error(line_no_, "bad header '" + std::string(Trim(line_)) +
+                                "', expected 'frame,time_s,pin,x_px,y_px' with an optional ',valid'");
+    }
+    n_cols_ = fields_.size();
   }
-  if (!have_header_line) throw InputError("pin CSV '" + path + "': empty file");
-  std::vector<std::string_view> f;
-  Split(line, f);
-  static constexpr std::string_view kColumns[] = {"frame", "time_s", "pin", "x_px", "y_px", "valid"};
-  const bool header_ok = (f.size() == 5 || f.size() == 6) && [&] {
-    for (size_t c = 0; c < f.size(); ++c) {
-      if (f[c] != kColumns[c]) return false;
+
+  // The current line's fields: numbers, finite, valid 0 or 1.
+  RowFields ParseRow() {
+    Split(line_, fields_);
+    const auto& f = fields_;
+    if (f.size() != n_cols_) {
+      throw Error(line_no_, "expected " + std::to_string(n_cols_) + " fields, got " + std::to_string(f.size()));
     }
-    return true;
-  }();
-  if (!header_ok) {
-    throw LineError(path, line_no,
-                    "bad header '" + std::string(Trim(line)) +
-                        "', expected 'frame,time_s,pin,x_px,y_px' with an optional ',valid'");
+    const auto bad = [&](const char* name, std::string_view v, const char* kind) {
+      return Error(line_no_, std::string(name) + " '" + std::string(v) + "' is not " + kind);
+    };
+    RowFields r;
+    double x = 0.0, y = 0.0;
+    if (!ParseField(f[0], r.frame)) throw bad("frame", f[0], "an integer");
+    if (!ParseField(f[1], r.time)) throw bad("time_s", f[1], "a number");
+    if (!ParseField(f[2], r.row.pin)) throw bad("pin", f[2], "an integer");
+    if (!ParseField(f[3], x)) throw bad("x_px", f[3], "a number");
+    if (!ParseField(f[4], y)) throw bad("y_px", f[4], "a number");
+    if (!std::isfinite(r.time)) throw bad("time_s", f[1], "finite");
+    if (!std::isfinite(static_cast<float>(x))) throw bad("x_px", f[3], "finite");
+    if (!std::isfinite(static_cast<float>(y))) throw bad("y_px", f[4], "finite");
+    r.row.x = static_cast<float>(x);
+    r.row.y = static_cast<float>(y);
+    r.row.valid = 1;
+    if (n_cols_ == 6) {
+      int v = 0;
+      if (!ParseField(f[5], v) || (v != 0 && v != 1)) throw bad("valid", f[5], "0 or 1");
+      r.row.valid = static_cast<unsigned char>(v);
+    }
+    return r;
   }
-  const size_t n_cols = f.size();
 
-  // Rows, grouped into frames by frame number.
-  std::vector<PinFrame> frames;
-  std::vector<Row> rows;            // rows of the frame being read
-  std::vector<unsigned char> seen;  // pin index seen in the frame being read
-  int n_pins = -1;                  // pin count of the first frame, once known
-  long first_frame_no = 0;          // frame number of the first frame
-  bool in_frame = false;
-  long frame_no = 0, frame_line = 0;  // frame being read and its first line
-  double frame_time = 0.0;
-
-  // Checks the frame being read and appends it.
-  const auto close_frame = [&] {
-    const int count = static_cast<int>(rows.size());
-    if (n_pins < 0) {
-      n_pins = count;
-      first_frame_no = frame_no;
-    } else if (count != n_pins) {
-      throw LineError(path, frame_line,
-                      "frame " + std::to_string(frame_no) + " has " + std::to_string(count) + " pins, frame " +
-                          std::to_string(first_frame_no) + " has " + std::to_string(n_pins));
+  // Frame bookkeeping: same frame, or a new one with larger number and later time.
+  void AdvanceFrame(const RowFields& r) {
+    const std::string time_text(fields_[1]);
+    if (in_frame_ && r.frame < frame_no_) {
+      throw Error(line_no_, "frame numbers not increasing: frame " + std::to_string(r.frame) + " after frame " +
+                                std::to_string(frame_no_));
     }
-    for (int i = 0; i < n_pins; ++i) {
-      if (i >= static_cast<int>(seen.size()) || !seen[i]) {
-        throw LineError(path, frame_line, "frame " + std::to_string(frame_no) + " is missing pin " + std::to_string(i));
+    if (in_frame_ && r.frame == frame_no_) {
+      if (r.time != frame_time_) {
+        throw Error(line_no_, "time_s " + time_text + " differs from the time_s of frame " +
+                                  std::to_string(r.frame) + "'s first row");
+      }
+      return;
+    }
+    if (in_frame_) {
+      CloseFrame();
+      if (!(r.time > frame_time_)) {
+        throw Error(line_no_, "time not increasing: frame " + std::to_string(r.frame) + " at time_s " + time_text +
+                                  " is not after frame " + std::to_string(frame_no_));
+      }
+    }
+    in_frame_ = true;
+    frame_no_ = r.frame;
+    frame_line_ = line_no_;
+    frame_time_ = r.time;
+  }
+
+  // Pin index: in range, once per frame.
+  void AddPin(const RowFields& r) {
+    const int pin = r.row.pin;
+    if (pin < 0) throw Error(line_no_, "pin " + std::to_string(pin) + " is negative");
+    if (n_pins_ >= 0 && pin >= n_pins_) {
+      throw Error(line_no_, "pin " + std::to_string(pin) + " out of range: frame " + std::to_string(first_frame_no_) +
+                                " has " + std::to_string(n_pins_) + " pins");
+    }
+    if (pin >= kMaxPins) throw Error(line_no_, "pin " + std::to_string(pin) + " is too large");
+    if (pin >= static_cast<int>(seen_.size())) seen_.resize(pin + 1, 0);
+    if (seen_[pin]) {
+      throw Error(line_no_, "duplicate pin " + std::to_string(pin) + " in frame " + std::to_string(r.frame));
+    }
+    seen_[pin] = 1;
+    rows_.push_back(r.row);
+  }
+
+  // Checks the frame being read (pin count as the first frame's, no pin missing) and
+  // appends it.
+  void CloseFrame() {
+    const int count = static_cast<int>(rows_.size());
+    if (n_pins_ < 0) {
+      n_pins_ = count;
+      first_frame_no_ = frame_no_;
+    } else if (count != n_pins_) {
+      throw Error(frame_line_, "frame " + std::to_string(frame_no_) + " has " + std::to_string(count) +
+                                   " pins, frame " + std::to_string(first_frame_no_) + " has " + std::to_string(n_pins_));
+    }
+    for (int i = 0; i < n_pins_; ++i) {
+      if (i >= static_cast<int>(seen_.size()) || !seen_[i]) {
+        throw Error(frame_line_, "frame " + std::to_string(frame_no_) + " is missing pin " + std::to_string(i));
       }
     }
     PinFrame pf;
-    pf.time_s = frame_time;
-    pf.pos_px.resize(n_pins, 2);
-    pf.valid.assign(n_pins, 1);
-    for (const Row& r : rows) {
+    pf.time_s = frame_time_;
+    pf.pos_px.resize(n_pins_, 2);
+    pf.valid.assign(n_pins_, 1);
+    for (const Row& r : rows_) {
       pf.pos_px(r.pin, 0) = r.x;
       pf.pos_px(r.pin, 1) = r.y;
       pf.valid[r.pin] = r.valid;
     }
-    frames.push_back(std::move(pf));
-    rows.clear();
-    std::fill(seen.begin(), seen.end(), 0);
-  };
-
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (Trim(line).empty()) continue;
-    Split(line, f);
-    if (f.size() != n_cols) {
-      throw LineError(path, line_no, "expected " + std::to_string(n_cols) + " fields, got " + std::to_string(f.size()));
-    }
-    // Fields.
-    long fr = 0;
-    int pin = 0;
-    double t = 0.0, x = 0.0, y = 0.0;
-    const auto bad = [&](const char* name, std::string_view v, const char* kind) {
-      return LineError(path, line_no, std::string(name) + " '" + std::string(v) + "' is not " + kind);
-    };
-    if (!ParseField(f[0], fr)) throw bad("frame", f[0], "an integer");
-    if (!ParseField(f[1], t)) throw bad("time_s", f[1], "a number");
-    if (!ParseField(f[2], pin)) throw bad("pin", f[2], "an integer");
-    if (!ParseField(f[3], x)) throw bad("x_px", f[3], "a number");
-    if (!ParseField(f[4], y)) throw bad("y_px", f[4], "a number");
-    if (!std::isfinite(t)) throw bad("time_s", f[1], "finite");
-    if (!std::isfinite(static_cast<float>(x))) throw bad("x_px", f[3], "finite");
-    if (!std::isfinite(static_cast<float>(y))) throw bad("y_px", f[4], "finite");
-    unsigned char valid = 1;
-    if (n_cols == 6) {
-      int v = 0;
-      if (!ParseField(f[5], v) || (v != 0 && v != 1)) throw bad("valid", f[5], "0 or 1");
-      valid = static_cast<unsigned char>(v);
-    }
-
-    // Frame bookkeeping: same frame, or a new one with larger number and later time.
-    if (in_frame && fr < frame_no) {
-      throw LineError(
-          path, line_no,
-          "frame numbers not increasing: frame " + std::to_string(fr) + " after frame " + std::to_string(frame_no));
-    }
-    if (in_frame && fr == frame_no) {
-      if (t != frame_time) {
-        throw LineError(
-            path, line_no,
-            "time_s " + std::string(f[1]) + " differs from the time_s of frame " + std::to_string(fr) + "'s first row");
-      }
-    } else {
-      if (in_frame) {
-        close_frame();
-        if (!(t > frame_time)) {
-          throw LineError(path, line_no,
-                          "time not increasing: frame " + std::to_string(fr) + " at time_s " + std::string(f[1]) +
-                              " is not after frame " + std::to_string(frame_no));
-        }
-      }
-      in_frame = true;
-      frame_no = fr;
-      frame_line = line_no;
-      frame_time = t;
-    }
-
-    // Pin index: in range, once per frame.
-    if (pin < 0) throw LineError(path, line_no, "pin " + std::to_string(pin) + " is negative");
-    if (n_pins >= 0 && pin >= n_pins) {
-      throw LineError(path, line_no,
-                      "pin " + std::to_string(pin) + " out of range: frame " + std::to_string(first_frame_no) +
-                          " has " + std::to_string(n_pins) + " pins");
-    }
-    if (pin >= kMaxPins) throw LineError(path, line_no, "pin " + std::to_string(pin) + " is too large");
-    if (pin >= static_cast<int>(seen.size())) seen.resize(pin + 1, 0);
-    if (seen[pin]) {
-      throw LineError(path, line_no, "duplicate pin " + std::to_string(pin) + " in frame " + std::to_string(fr));
-    }
-    seen[pin] = 1;
-    rows.push_back({pin, static_cast<float>(x), static_cast<float>(y), valid});
+    frames_.push_back(std::move(pf));
+    rows_.clear();
+    std::fill(seen_.begin(), seen_.end(), 0);
   }
-  if (in.bad()) throw InputError("pin CSV '" + path + "': read error");
-  if (!in_frame) throw LineError(path, line_no, "empty file: no data rows after the header");
-  close_frame();
-  return frames;
-}
+
+  const std::string path_;
+  std::ifstream in_;
+  std::string line_;
+  long line_no_ = 0;
+  std::vector<std::string_view> fields_;  // views into line_
+  size_t n_cols_ = 0;
+  std::vector<PinFrame> frames_;
+  std::vector<Row> rows_;            // rows of the frame being read
+  std::vector<unsigned char> seen_;  // pin index seen in the frame being read
+  int n_pins_ = -1;                  // pin count of the first frame, once known
+  long first_frame_no_ = 0;          // frame number of the first frame
+  bool in_frame_ = false;
+  long frame_no_ = 0, frame_line_ = 0;  // frame being read and its first line
+  double frame_time_ = 0.0;
+};
+
+}  // namespace
+
+std::vector<PinFrame> ReadPinCsv(const std::string& path) { return PinCsvReader(path).Read(); }
 
 void WritePinCsv(const std::string& path, const std::vector<PinFrame>& frames) {
   const auto fail = [&](const std::string& what) { return InputError("pin CSV '" + path + "': " + what); };
