@@ -38,12 +38,82 @@ HardwareReference Reference(const std::string& name) {
 
 std::string Num(double v, const char* spec) { return std::isnan(v) ? "-" : fmt::format(fmt::runtime(spec), v); }
 
+void Log(const BenchOptions& opts, const std::string& s) {
+  if (opts.log) opts.log(s);
+}
+
+void CheckStop(const BenchOptions& opts) {
+  if (opts.stop && opts.stop->load()) throw Interrupted();
+}
+
+// The standard dataset: generated with a fixed seed unless one is given. Sets r's dataset
+// path and retraction speed (NaN for a given dataset).
+void ProvideDataset(const RailScenarioConfig& cfg, const BenchOptions& opts, BenchResult& r) {
+  if (!opts.dataset.empty()) {
+    r.dataset_path = opts.dataset;
+    r.speed_mm_s = std::nan("");
+    return;
+  }
+  r.dataset_path = (std::filesystem::path(opts.out_dir) / "bench-rail.h5").string();
+  GenerateOptions g;
+  g.runs = opts.runs;
+  g.seed = opts.seed;
+  g.jobs = opts.jobs;
+  g.out_path = r.dataset_path;
+  g.stop = opts.stop;
+  g.progress = [&](int done, int total, int, const RailRunSummary&) {
+    if (done % 10 == 0 || done == total) Log(opts, fmt::format("dataset: {}/{} runs", done, total));
+  };
+  Log(opts, fmt::format("generating {} rail runs at {} mm/s (seed {}) into {}", opts.runs, cfg.rail.retract_speed_mm_s,
+                        opts.seed, r.dataset_path));
+  GenerateRailDataset(cfg, g);
+  r.speed_mm_s = cfg.rail.retract_speed_mm_s;
+}
+
+// Saves a trained detector's model, evaluates it on the held-out runs and appends its row.
+void Score(Detector& det, const std::string& label, bool trained, const std::vector<LabeledRun>& test, int n_slip,
+           const BenchOptions& opts, BenchResult& r) {
+  CheckStop(opts);
+  BenchRow row;
+  if (trained) {
+    std::string file = label;
+    for (char& ch : file) ch = ch == '/' ? '-' : ch;
+    row.model_path = (std::filesystem::path(opts.out_dir) / (file + ".model")).string();
+    det.Save(row.model_path);
+  }
+  row.eval = Evaluate(det, test, n_slip);
+  row.eval.detector = label;
+  row.hardware = Reference(label);
+  Log(opts, fmt::format("{}: F1 {:.3f}", label, row.eval.confusion.F1()));
+  r.rows.push_back(std::move(row));
+}
+
+// The SVMs (linear, then Gaussian) on the configured features, then on the other feature
+// variants, labelled "name/features".
+void ScoreSvms(const std::vector<LabeledRun>& train, const std::vector<LabeledRun>& test, const TrainingSet& ts,
+               const TrainOptions& topt, const BenchOptions& opts, BenchResult& r) {
+  std::vector<FeatureSet> variants = {topt.features};
+  for (FeatureSet f : {FeatureSet::kDrDtheta, FeatureSet::kDr, FeatureSet::kDtheta}) {
+    if (f != topt.features) variants.push_back(f);
+  }
+  for (auto kernel : {SvmDetector::Kernel::kLinear, SvmDetector::Kernel::kRbf}) {
+    const std::string base = kernel == SvmDetector::Kernel::kRbf ? "svm-rbf" : "svm-linear";
+    for (FeatureSet f : variants) {
+      TrainOptions vopt = topt;
+      vopt.features = f;
+      const std::string label = f == topt.features ? base : base + "/" + ToString(f);
+      CheckStop(opts);
+      Log(opts, fmt::format("training {} (grouped CV over C{})", label,
+                            kernel == SvmDetector::Kernel::kRbf ? " and gamma" : ""));
+      const TrainingSet vts = f == topt.features ? TrainingSet{} : BuildTrainingSet(train, vopt);
+      Score(*SvmDetector::Train(f == topt.features ? ts : vts, kernel, vopt), label, true, test, topt.n_slip, opts, r);
+    }
+  }
+}
+
 }  // namespace
 
 BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
-  auto log = [&](const std::string& s) {
-    if (opts.log) opts.log(s);
-  };
   if (opts.runs < 4) {
     throw InputError(fmt::format("--runs = {}: the benchmark needs at least 4 (cross-validation needs 2 training runs)",
                                  opts.runs));
@@ -54,27 +124,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
 
   BenchResult r;
   r.seed = opts.seed;
-  // The standard dataset: generated with a fixed seed unless one is given.
-  if (opts.dataset.empty()) {
-    r.dataset_path = (std::filesystem::path(opts.out_dir) / "bench-rail.h5").string();
-    const RailScenarioConfig& c = cfg;
-    GenerateOptions g;
-    g.runs = opts.runs;
-    g.seed = opts.seed;
-    g.jobs = opts.jobs;
-    g.out_path = r.dataset_path;
-    g.stop = opts.stop;
-    g.progress = [&](int done, int total, int, const RailRunSummary&) {
-      if (done % 10 == 0 || done == total) log(fmt::format("dataset: {}/{} runs", done, total));
-    };
-    log(fmt::format("generating {} rail runs at {} mm/s (seed {}) into {}", opts.runs, c.rail.retract_speed_mm_s,
-                    opts.seed, r.dataset_path));
-    GenerateRailDataset(c, g);
-    r.speed_mm_s = c.rail.retract_speed_mm_s;
-  } else {
-    r.dataset_path = opts.dataset;
-    r.speed_mm_s = std::nan("");
-  }
+  ProvideDataset(cfg, opts, r);
   // Disjoint halves: first half trains, second half tests.
   std::vector<LabeledRun> all = LoadDatasetRuns(r.dataset_path, {}, opts.score_onset_frame, opts.sensor);
   if (all.size() < 2) throw InputError(fmt::format("dataset '{}' has fewer than 2 runs", r.dataset_path));
@@ -89,63 +139,26 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   const TrainingSet ts = BuildTrainingSet(train, topt);
   r.train_rows = static_cast<long>(ts.y.size());
   for (int y : ts.y) r.train_slip_rows += y;
-  log(fmt::format("training set: {} frames ({} slip) from runs {}-{}", r.train_rows, r.train_slip_rows,
-                  r.train_runs.front(), r.train_runs.back()));
-
-  // Train, save and evaluate every detector on the held-out runs. Feature variants
-  // other than the configured one are labelled "name/features".
-  auto finish = [&](Detector& det, const std::string& label, bool trained) {
-    if (opts.stop && opts.stop->load()) throw Interrupted();
-    BenchRow row;
-    if (trained) {
-      std::string file = label;
-      for (char& ch : file) ch = ch == '/' ? '-' : ch;
-      row.model_path = (std::filesystem::path(opts.out_dir) / (file + ".model")).string();
-      det.Save(row.model_path);
-    }
-    row.eval = Evaluate(det, test, topt.n_slip);
-    row.eval.detector = label;
-    row.hardware = Reference(label);
-    log(fmt::format("{}: F1 {:.3f}", label, row.eval.confusion.F1()));
-    r.rows.push_back(std::move(row));
-  };
+  Log(opts, fmt::format("training set: {} frames ({} slip) from runs {}-{}", r.train_rows, r.train_slip_rows,
+                        r.train_runs.front(), r.train_runs.back()));
   if (r.train_slip_rows == 0) {
     throw InputError(fmt::format("dataset '{}': no training run has a gross-slip onset after the retraction starts "
                                  "(objects slipping during the lift are not scored)", r.dataset_path));
   }
-  auto check_stop = [&] {
-    if (opts.stop && opts.stop->load()) throw Interrupted();
-  };
-  check_stop();
-  log("training threshold");
-  finish(*ThresholdDetector::Train(train, topt), "threshold", true);
-  check_stop();
-  log("training logreg (grouped CV over C)");
-  finish(*LogRegDetector::Train(ts, topt), "logreg", true);
-  // SVMs on the configured features, then on the two single-feature variants.
-  std::vector<FeatureSet> variants = {topt.features};
-  for (FeatureSet f : {FeatureSet::kDrDtheta, FeatureSet::kDr, FeatureSet::kDtheta}) {
-    if (f != topt.features) variants.push_back(f);
-  }
-  for (auto kernel : {SvmDetector::Kernel::kLinear, SvmDetector::Kernel::kRbf}) {
-    const std::string base = kernel == SvmDetector::Kernel::kRbf ? "svm-rbf" : "svm-linear";
-    for (FeatureSet f : variants) {
-      TrainOptions vopt = topt;
-      vopt.features = f;
-      const std::string label = f == topt.features ? base : base + "/" + ToString(f);
-      check_stop();
-      log(fmt::format("training {} (grouped CV over C{})", label,
-                      kernel == SvmDetector::Kernel::kRbf ? " and gamma" : ""));
-      const TrainingSet vts = f == topt.features ? TrainingSet{} : BuildTrainingSet(train, vopt);
-      finish(*SvmDetector::Train(f == topt.features ? ts : vts, kernel, vopt), label, true);
-    }
-  }
+  // Train, save and evaluate every detector on the held-out runs.
+  CheckStop(opts);
+  Log(opts, "training threshold");
+  Score(*ThresholdDetector::Train(train, topt), "threshold", true, test, topt.n_slip, opts, r);
+  CheckStop(opts);
+  Log(opts, "training logreg (grouped CV over C)");
+  Score(*LogRegDetector::Train(ts, topt), "logreg", true, test, topt.n_slip, opts, r);
+  ScoreSvms(train, test, ts, topt, opts, r);
   IncipientParams ip;
   ip.window = opts.incipient_window;
   ip.speed_thr_px = opts.incipient_speed_thr_px;
   ip.count_thr = opts.incipient_count_thr;
   IncipientDetector inc(ip);
-  finish(inc, "incipient", false);
+  Score(inc, "incipient", false, test, topt.n_slip, opts, r);
 
   WriteFileAtomic((std::filesystem::path(opts.out_dir) / "bench.json").string(), BenchJson(r));
   WriteFileAtomic((std::filesystem::path(opts.out_dir) / "bench.csv").string(), BenchCsv(r));
