@@ -7,7 +7,7 @@
 
 namespace tactip {
 
-void DropFrictionReference(mjData* d, double sliding_speed_m_s) {
+void FadeFrictionReference(mjData* d, double sliding_speed_m_s) {
   for (int i = 0; i < d->nefc; ++i) {
     if (d->efc_type[i] != mjCNSTR_CONTACT_ELLIPTIC) continue;
     const int dim = d->contact[d->efc_id[i]].dim;

@@ -1,6 +1,6 @@
 #pragma once
-// The friction rows' velocity target in MuJoCo's constraint solve, dropped when a
-// friction post-pass owns the tangential velocities.
+// The friction rows' velocity target in MuJoCo's constraint solve, faded out for fast
+// sliding contacts when a friction post-pass owns the tangential velocities.
 //
 // MuJoCo gives every friction row the reference acceleration -B v_t (B = 2 / (d_max
 // timeconst)): the solve tries to stop a sliding contact within one contact time
@@ -12,8 +12,8 @@
 // contacting pins between 1 and 31). Coulomb friction does not change the normal force.
 // With a post-pass (tactip's exact friction pass or MuJoCo's noslip) the friction forces
 // of the solve are replaced anyway; all the solve's friction rows must still do is
-// share the acceleration balance, so their target becomes zero tangential acceleration
-// and the normal forces of sliding contacts stay what the contact's penetration gives.
+// share the acceleration balance, so a fast contact's target becomes zero tangential
+// acceleration and the normal forces of sliding contacts stay what the penetration gives.
 
 struct mjData_;
 
@@ -28,6 +28,6 @@ namespace tactip {
 /// pins (mm/s), whose light contacts flickered open and shut without it (stability suite,
 /// v2 cases, at thresholds of 1 and 10 mm/s; 30 mm/s, the default, is clean). Call after
 /// the velocity stage (efc_vel) and before mj_fwdConstraint.
-void DropFrictionReference(mjData_* d, double sliding_speed_m_s);
+void FadeFrictionReference(mjData_* d, double sliding_speed_m_s);
 
 }  // namespace tactip

@@ -14,8 +14,8 @@ namespace tactip {
 inline constexpr const char* kFrictionPassNumeric = "tactip_friction_pass";
 
 /// Name of the MJCF custom numeric holding sim.free_sliding_speed_mm_s (in m/s): contacts
-/// sliding faster lose their friction rows' velocity target in MuJoCo's solve (faded out by twice it)
-/// (sim/friction_reference.h). Absent: MuJoCo's target everywhere.
+/// sliding faster lose their friction rows' velocity target in MuJoCo's solve (faded out,
+/// none at twice it; sim/friction_reference.h). Absent: MuJoCo's target everywhere.
 inline constexpr const char* kFreeSlidingNumeric = "tactip_free_sliding_speed";
 
 /// Integrator and constraint-solver settings (the `sim.` section).
@@ -71,7 +71,8 @@ struct SimConfig {
       "(see MaxStableTimestep). Turn off only to study the instability itself.");
     v("free_sliding_speed_mm_s", free_sliding_speed_mm_s, "mm/s",
       "With a friction post-pass (noslip_iterations > 0): contacts sliding faster than this lose their friction "
-      "velocity target in MuJoCo's solve (faded out linearly, none at twice this speed), whose elliptic cone otherwise turns it into a normal force that grows "
+      "velocity target in MuJoCo's solve (faded out linearly, none at twice this speed), whose elliptic cone "
+      "otherwise turns it into a normal force that grows "
       "with the sliding speed and makes a sliding object's contacts chatter (rail, gross slip: total normal force "
       "0.02-1.2 N, 1-31 pins in contact, against a steady 0.8-0.97 N and 19 pins without it). 30 mm/s: above "
       "the quasi-static partial slip of fingerprint skins (mm/s), below gross slip. 0 keeps MuJoCo's target "

@@ -148,7 +148,7 @@ void Simulation::Forward() {
   mj_forward(model_.raw(), data_.get());
   if (plane_.active() || free_sliding_speed_m_s_ > 0.0) {
     // Solve the constraints again with the friction rows across the pressing axes and
-    // without their velocity target.
+    // fast contacts' velocity target faded out.
     PrepareConstraints();
     mj_fwdConstraint(model_.raw(), data_.get());
   }
@@ -158,7 +158,7 @@ void Simulation::Forward() {
 
 void Simulation::PrepareConstraints() {
   plane_.Apply(model_.raw(), data_.get());
-  if (free_sliding_speed_m_s_ > 0.0) DropFrictionReference(data_.get(), free_sliding_speed_m_s_);
+  if (free_sliding_speed_m_s_ > 0.0) FadeFrictionReference(data_.get(), free_sliding_speed_m_s_);
 }
 
 void Simulation::Step() {

@@ -156,7 +156,7 @@ class Simulation {
   std::vector<double> efc_vel_;        // constraint-space velocity J * qvel (njmax)
   bool have_efc_vel_ = false;          // efc_vel_ holds this read-out's velocities
   FrictionPlane plane_;                // friction rows across the pins' pressing axes
-  double free_sliding_speed_m_s_ = 0.0;  // faster contacts: no friction velocity target in the solve (0: off)
+  double free_sliding_speed_m_s_ = 0.0;  // faster contacts: friction velocity target faded out (0: off)
   std::array<int, 8> warn_seen_{};
   std::unique_ptr<FrictionPass> friction_;  // null: MuJoCo's own noslip (or none)
   FrictionPassStats last_friction_;

@@ -19,7 +19,7 @@ namespace {
 
 // A sphere resting on a plane in an elliptic cone (one contact, condim 3), sliding along
 // x at `speed` without rolling; returns the friction rows' reference acceleration along x
-// after DropFrictionReference with the given threshold (threshold 0: MuJoCo's own).
+// after FadeFrictionReference with the given threshold (threshold 0: MuJoCo's own).
 double SlidingReference(double speed, double threshold) {
   static const CompiledModel model = CompiledModel::FromXml(
       "<mujoco><option cone='elliptic' timestep='0.001'/><worldbody>"
@@ -32,7 +32,7 @@ double SlidingReference(double speed, double threshold) {
   mj_fwdVelocity(model.raw(), d.get());
   EXPECT_EQ(d->ncon, 1);
   EXPECT_EQ(d->efc_type[0], mjCNSTR_CONTACT_ELLIPTIC);
-  if (threshold > 0.0) DropFrictionReference(d.get(), threshold);
+  if (threshold > 0.0) FadeFrictionReference(d.get(), threshold);
   // Row 0 is the normal; rows 1, 2 the two tangent directions: the one along x carries it.
   return std::abs(d->efc_aref[1]) > std::abs(d->efc_aref[2]) ? d->efc_aref[1] : d->efc_aref[2];
 }
