@@ -54,7 +54,7 @@ GelField GelField::Build(const SkinConfig& skin, const PinLattice& lattice) {
       const double s2 = d[0] * d[0] + d[1] * d[1];
       const double k = gain * std::exp(-std::sqrt(s2) / screening_m) / (s2 + spread_m * spread_m);
       const auto v = OnDome(lattice.pins[i], {k * d[0], k * d[1]});
-      std::copy(v.begin(), v.end(), field.influence_.begin() + (static_cast<size_t>(i) * n + j) * 3);
+      std::copy(v.begin(), v.end(), field.influence_.begin() + (static_cast<size_t>(j) * n + i) * 3);
     }
   }
   return field;
@@ -66,13 +66,14 @@ double GelField::Squeeze(double indentation_m) const {
 
 void GelField::Shifts(const std::vector<double>& indentation_m, std::vector<std::array<double, 3>>& shift) const {
   shift.assign(static_cast<size_t>(n_), {0.0, 0.0, 0.0});
-  // Superpose every squeezing pin's flow on every marker.
+  // Superpose every squeezing pin's flow on every marker (for each marker the sources are
+  // added in pin order).
   for (int j = 0; j < n_; ++j) {
     const double q = Squeeze(indentation_m[j]);
     if (q == 0.0) continue;
+    const double* k = influence_.data() + static_cast<size_t>(j) * n_ * 3;
     for (int i = 0; i < n_; ++i) {
-      const double* k = influence_.data() + (static_cast<size_t>(i) * n_ + j) * 3;
-      for (int c = 0; c < 3; ++c) shift[i][c] += k[c] * q;
+      for (int c = 0; c < 3; ++c) shift[i][c] += k[3 * i + c] * q;
     }
   }
 }

@@ -34,7 +34,9 @@ class GelField {
  private:
   int n_ = 0;
   double squeeze_m_ = 0.0;
-  std::vector<double> influence_;  // (N, N, 3): marker i's shift (m) per metre of pin j's squeeze
+  // (N, N, 3), source-major: [j][i][c] is marker i's shift (m) per metre of pin j's squeeze,
+  // so one squeezing pin's flow on every marker is one contiguous run.
+  std::vector<double> influence_;
 };
 
 }  // namespace tactip
