@@ -48,6 +48,16 @@ std::array<double, 2> PinholeCamera::Project(const std::array<double, 3>& p) con
   return {cfg_.cx_px + cfg_.fx_px * p[1] / depth, cfg_.cy_px - cfg_.fy_px * p[2] / depth};
 }
 
+double PinholeCamera::ImageGain(const std::array<double, 3>& p) const {
+  // u = cx + fx y / d, v = cy - fy z / d with d = x + offset: du/dp = fx (-y / d^2, 1 / d, 0),
+  // dv/dp = fy (z / d^2, 0, -1 / d).
+  const double d = p[0] + cfg_.camera_offset_mm * 1e-3;
+  const double d2 = d * d;
+  const double gu = cfg_.fx_px * cfg_.fx_px * (p[1] * p[1] / (d2 * d2) + 1.0 / d2);
+  const double gv = cfg_.fy_px * cfg_.fy_px * (p[2] * p[2] / (d2 * d2) + 1.0 / d2);
+  return std::sqrt(gu + gv);
+}
+
 std::array<double, 2> ExternalCamera::Project(const std::array<double, 3>& p) const {
   const double depth = cam_x_ - p[0];
   return {cfg_.cx_px - cfg_.f_px * p[1] / depth, cfg_.cy_px - cfg_.f_px * p[2] / depth};

@@ -66,6 +66,9 @@ class PinholeCamera {
   /// Projects a point in the sensor frame (metres) to pixels; the point must lie in
   /// front of the camera.
   std::array<double, 2> Project(const std::array<double, 3>& p_sensor_m) const;
+  /// Largest image motion (px) per metre of motion of a point (sensor frame): the Frobenius
+  /// norm of the projection's Jacobian at the point, which bounds every direction's gain.
+  double ImageGain(const std::array<double, 3>& p_sensor_m) const;
 
  private:
   CameraConfig cfg_;

@@ -22,21 +22,6 @@ CameraConfig ExternalNoise(const ExternalCameraConfig& e) {
   return c;
 }
 
-// Largest image motion per metre of motion of point `p` (sensor frame): the Frobenius norm
-// of the projection's Jacobian, by central differences (it bounds every direction's gain).
-double ImageGain(const PinholeCamera& camera, const std::array<double, 3>& p) {
-  constexpr double h = 1e-5;
-  double sum = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    auto a = p, b = p;
-    a[k] += h;
-    b[k] -= h;
-    const auto ua = camera.Project(a), ub = camera.Project(b);
-    sum += (ua[0] - ub[0]) * (ua[0] - ub[0]) + (ua[1] - ub[1]) * (ua[1] - ub[1]);
-  }
-  return std::sqrt(sum) / (2.0 * h);
-}
-
 }  // namespace
 
 TactileSensorIds TactileSensorIds::Find(const CompiledModel& m, const std::string& body_name, int n_pins,
@@ -136,7 +121,7 @@ void TactileSensor::CapturePins(const Simulation& sim) {
       for (int k = 0; k < 3; ++k) p[k] -= spec_.marker_rock_m_N * fs[k];
     }
     for (int k = 0; k < 3; ++k) reading_.pos_m.push_back(static_cast<float>(p[k]));
-    image_gain_px_m_ = std::max(image_gain_px_m_, ImageGain(camera_, p));
+    image_gain_px_m_ = std::max(image_gain_px_m_, camera_.ImageGain(p));
     const auto uv = camera_.Project(p);
     px_[2 * i] = static_cast<float>(uv[0]);
     px_[2 * i + 1] = static_cast<float>(uv[1]);

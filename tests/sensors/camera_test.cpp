@@ -34,6 +34,29 @@ TEST(CameraTest, PinholeScalesWithDepthAndFlipsVertical) {
   EXPECT_NEAR(right[0], c.cx_px + c.fx_px * 0.002 / depth, 1e-9);
 }
 
+TEST(CameraTest, ImageGainIsTheProjectionJacobiansNorm) {
+  // The analytic gain against central differences of Project, off axis, and its bound:
+  // no direction moves the image by more than the gain per metre.
+  CameraConfig c;
+  const PinholeCamera cam(c);
+  const std::array<double, 3> p{0.012, 0.006, -0.004};
+  constexpr double h = 1e-6;
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    auto a = p, b = p;
+    a[k] += h;
+    b[k] -= h;
+    const auto ua = cam.Project(a), ub = cam.Project(b);
+    sum += (ua[0] - ub[0]) * (ua[0] - ub[0]) + (ua[1] - ub[1]) * (ua[1] - ub[1]);
+  }
+  const double numeric = std::sqrt(sum) / (2.0 * h);
+  EXPECT_NEAR(cam.ImageGain(p), numeric, 1e-6 * numeric);
+  auto q = p;
+  q[2] += 1e-6;  // a step along z alone
+  const auto u0 = cam.Project(p), u1 = cam.Project(q);
+  EXPECT_LT(std::hypot(u1[0] - u0[0], u1[1] - u0[1]), cam.ImageGain(p) * 1e-6);
+}
+
 TEST(CameraTest, FramesSampleTheNearestPhysicsStep) {
   EXPECT_EQ(FrameStep(0, 100.0, 0.002), 0);
   EXPECT_EQ(FrameStep(7, 100.0, 0.002), 35);
