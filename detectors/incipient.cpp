@@ -41,6 +41,28 @@ void IncipientDetector::Reset() {
 }
 
 Decision IncipientDetector::Update(const PinFrame& frame) {
+  CheckFrame(frame);
+  Decision d;
+  if (!has_prev_) {
+    // First frame of a run: no velocity yet.
+    StartRun(frame);
+    d.n_slipping = static_cast<int>(slipping_.size());
+    return d;
+  }
+  PushVelocities(frame);
+  SmoothSpeeds();
+  const double s = BulkSpeed();
+  // Pins are judged once the window holds W velocity frames.
+  if (frames_in_ring_ == params_.window) Judge(s);
+  Remember(frame);
+  d.score = s;
+  d.n_slipping = static_cast<int>(slipping_.size());
+  d.slip = d.n_slipping >= params_.count_thr;
+  d.slipping_pins = slipping_;
+  return d;
+}
+
+void IncipientDetector::CheckFrame(const PinFrame& frame) const {
   const int n = frame.size();
   if (!frame.valid.empty() && static_cast<int>(frame.valid.size()) != n) {
     throw InputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
@@ -50,31 +72,29 @@ Decision IncipientDetector::Update(const PinFrame& frame) {
     throw InputError("frame at t = " + std::to_string(frame.time_s) + " s has " + std::to_string(n) +
                      " pins, the previous frame " + std::to_string(n_pins_));
   }
-  Decision d;
-  if (!has_prev_) {
-    // First frame of a run: size the buffers, remember the positions, no velocity yet.
-    if (n != n_pins_ || ring_x_.cols() != params_.window) {
-      n_pins_ = n;
-      ring_x_.resize(n, params_.window);
-      ring_y_.resize(n, params_.window);
-      smoothed_.resize(n);
-      moved_.assign(n, 0);
-      in_set_.assign(n, 0);
-      slipping_.reserve(n);
-    }
-    prev_pos_ = frame.pos_px;
-    if (frame.valid.empty()) {
-      prev_valid_.assign(n, 1);
-    } else {
-      prev_valid_.assign(frame.valid.begin(), frame.valid.end());
-    }
-    has_prev_ = true;
-    d.n_slipping = static_cast<int>(slipping_.size());
-    return d;
-  }
+}
 
-  // Velocity for this frame into the ring (0 for pins missed in either frame).
-  for (int i = 0; i < n; ++i) {
+void IncipientDetector::StartRun(const PinFrame& frame) {
+  // Size the buffers (kept if the pin count and window are unchanged), then remember the
+  // positions.
+  const int n = frame.size();
+  if (n != n_pins_ || ring_x_.cols() != params_.window) {
+    n_pins_ = n;
+    ring_x_.resize(n, params_.window);
+    ring_y_.resize(n, params_.window);
+    smoothed_.resize(n);
+    moved_.assign(n, 0);
+    in_set_.assign(n, 0);
+    slipping_.reserve(n);
+  }
+  prev_valid_.resize(n);
+  Remember(frame);
+  has_prev_ = true;
+}
+
+void IncipientDetector::PushVelocities(const PinFrame& frame) {
+  // This frame's velocity into the ring (0 for pins missed in either frame).
+  for (int i = 0; i < n_pins_; ++i) {
     const bool ok = prev_valid_[i] && (frame.valid.empty() || frame.valid[i]);
     moved_[i] = ok ? 1 : 0;
     ring_x_(i, ring_head_) = ok ? static_cast<double>(frame.pos_px(i, 0)) - prev_pos_(i, 0) : 0.0;
@@ -82,10 +102,12 @@ Decision IncipientDetector::Update(const PinFrame& frame) {
   }
   ring_head_ = (ring_head_ + 1) % params_.window;
   if (frames_in_ring_ < params_.window) ++frames_in_ring_;
+}
 
-  // Moving average of the velocity over the filled columns (order does not matter),
-  // then its magnitude.
-  for (int i = 0; i < n; ++i) {
+void IncipientDetector::SmoothSpeeds() {
+  // Moving average of the velocity over the filled columns (order does not matter), then
+  // its magnitude.
+  for (int i = 0; i < n_pins_; ++i) {
     double ax = 0.0, ay = 0.0;
     for (int c = 0; c < frames_in_ring_; ++c) {
       ax += ring_x_(i, c);
@@ -93,43 +115,41 @@ Decision IncipientDetector::Update(const PinFrame& frame) {
     }
     smoothed_[i] = std::sqrt(ax * ax + ay * ay) / frames_in_ring_;
   }
+}
 
-  // Bulk speed s(t) over the static pins with a velocity.
+double IncipientDetector::BulkSpeed() const {
+  // s(t): the mean smoothed speed of the still-static pins with a velocity this frame.
   double sum = 0.0;
   int count = 0;
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < n_pins_; ++i) {
     if (moved_[i] && !in_set_[i]) {
       sum += smoothed_[i];
       ++count;
     }
   }
-  const double s = count > 0 ? sum / count : 0.0;
+  return count > 0 ? sum / count : 0.0;
+}
 
-  // The slipping set is re-judged every frame once the window is full: a pin is in it
-  // while its smoothed speed exceeds the bulk speed of the pins that were static in the
-  // previous frame by more than s_thr. Pins missed this frame keep their membership.
-  const bool judge = frames_in_ring_ == params_.window;
-  if (judge) {
-    slipping_.clear();
-    for (int i = 0; i < n; ++i) {
-      if (moved_[i]) in_set_[i] = smoothed_[i] - s > params_.speed_thr_px ? 1 : 0;
-      if (in_set_[i]) slipping_.push_back(i);
-    }
+void IncipientDetector::Judge(double bulk_speed) {
+  // A pin is in the set while its smoothed speed exceeds the bulk speed of the pins that
+  // were static in the previous frame by more than s_thr; pins missed this frame keep
+  // their membership.
+  slipping_.clear();
+  for (int i = 0; i < n_pins_; ++i) {
+    if (moved_[i]) in_set_[i] = smoothed_[i] - bulk_speed > params_.speed_thr_px ? 1 : 0;
+    if (in_set_[i]) slipping_.push_back(i);
   }
+}
 
-  // Remember this frame (same sizes: no reallocation).
+void IncipientDetector::Remember(const PinFrame& frame) {
+  // The positions and detection flags for the next frame's velocity (same sizes after
+  // the first frame: no reallocation).
   prev_pos_ = frame.pos_px;
   if (frame.valid.empty()) {
     std::fill(prev_valid_.begin(), prev_valid_.end(), 1);
   } else {
     std::copy(frame.valid.begin(), frame.valid.end(), prev_valid_.begin());
   }
-
-  d.score = s;
-  d.n_slipping = static_cast<int>(slipping_.size());
-  d.slip = d.n_slipping >= params_.count_thr;
-  d.slipping_pins = slipping_;
-  return d;
 }
 
 void IncipientDetector::Save(const std::string& path) const {

@@ -58,6 +58,15 @@ class IncipientDetector : public Detector {
   const std::vector<int>& slipping_pins() const { return slipping_; }
 
  private:
+  // The steps of Update, in order.
+  void CheckFrame(const PinFrame& frame) const;  // throws InputError on a pin-count change
+  void StartRun(const PinFrame& frame);          // first frame of a run: size, remember
+  void PushVelocities(const PinFrame& frame);    // velocities into the ring, moved_ flags
+  void SmoothSpeeds();                           // smoothed_ from the ring
+  double BulkSpeed() const;                      // s(t)
+  void Judge(double bulk_speed);                 // re-judge the slipping set
+  void Remember(const PinFrame& frame);          // positions and flags for the next frame
+
   IncipientParams params_;
   int n_pins_ = 0;                         // pin count of the current run (0 before the first frame)
   bool has_prev_ = false;                  // a previous frame exists
