@@ -37,13 +37,15 @@ struct StudyArgs {
   IncipientParams report_params;
 };
 
-// The dome-check options for the rail config with the dome's skin, 1 ms step and `extra`.
+// The dome-check options for the rail config with the dome's skin (fingerprint-v2 unless
+// --skin names one), a 1 ms step and `extra` after the user's --set.
 DomeCheckOptions DomeOptions(const ConfigArgs& c, const std::vector<std::string>& extra) {
-  std::vector<std::string> sets = SkinPreset(c.skin.empty() ? "fingerprint-v2" : c.skin);
-  sets.push_back("sim.timestep_s=0.001");
-  sets.insert(sets.end(), c.sets.begin(), c.sets.end());
-  sets.insert(sets.end(), extra.begin(), extra.end());
-  const auto cfg = LoadConfig<RailScenarioConfig>(c.config_path, sets);
+  ConfigArgs dome = c;
+  if (dome.skin.empty()) dome.skin = "fingerprint-v2";
+  dome.sets = {"sim.timestep_s=0.001"};
+  dome.sets.insert(dome.sets.end(), c.sets.begin(), c.sets.end());
+  dome.sets.insert(dome.sets.end(), extra.begin(), extra.end());
+  const RailScenarioConfig cfg = RailFamily(FindScenario("rail")).Load(dome.Source());
   DomeCheckOptions d;
   d.rig.sim = cfg.sim;
   d.rig.skin = cfg.skin;
@@ -68,10 +70,9 @@ bool RunDome(const DomeCheckOptions& d, const DomeCriteria& k, const std::string
 // 1 ms, twice: with a 0.3 mm skin (membrane reach a third of the contact radius, the regime
 // of the continuum band) and as configured. Every config is checked before anything runs.
 int RunContactChecks(const ConfigArgs& c) {
-  // The brush check's lattice: the --skin preset (the rail default without one), then --set.
-  std::vector<std::string> sets = c.skin.empty() ? std::vector<std::string>{} : SkinPresetOverrides(c.skin);
-  sets.insert(sets.end(), c.sets.begin(), c.sets.end());
-  const auto rail = LoadConfig<RailScenarioConfig>(c.config_path, sets);
+  // The brush check's lattice: the rail scene's config as generate would load it (--skin
+  // preset, then --set).
+  const RailScenarioConfig rail = RailFamily(FindScenario("rail")).Load(c.Source());
   const DomeCheckOptions configured_dome = DomeOptions(c, {});
   const DomeCheckOptions continuum_dome = [&] {
     try {
