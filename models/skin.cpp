@@ -306,107 +306,110 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   return BuildSkin(skin, contact, lattice, collidable, timestep_s, std::vector<bool>(lattice.size(), true));
 }
 
-SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
-                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site,
-                   const SkinNames& names) {
-  const SkinMechanics mech = SkinMechanics::From(skin, lattice);
-  const double R = skin.radius_mm * 1e-3;
-  const double R_out = skin.OuterRadiusMm() * 1e-3;
-  const double rc = skin.ContactRadiusMm() * 1e-3;
-  // The marker the internal camera sees: the inner end of the pin.
-  double r_marker = R - (skin.thickness_mm + skin.pin_length_mm) * 1e-3;
-  if (skin.pattern == "fingerprint-v1") r_marker = R - skin.thickness_mm * 1e-3;  // pins reach out into the ridges
-  if (skin.pattern == "fingerprint-v2") r_marker = R_out - skin.pin_length_mm * 1e-3;  // through the skin at the peak
-  const double n = static_cast<double>(lattice.size());
-  const bool shell_mode = skin.coupling == "shell";
-  const bool membrane = skin.coupling == "membrane";
-  const double c_tip = membrane ? mech.TipDamping(timestep_s) : mech.tip_damping_Ns_m;
-  const double c_normal = membrane ? mech.NormalDamping(timestep_s) : mech.pin_damping_Ns_m;
+namespace {
 
-  SkinPart part;
-  part.collidable = collidable;
-  // The skin shell. In shell mode it translates in-plane on the gel (shear springs of
-  // all pins in parallel): the membrane's in-plane stiffness E t is two to three orders
-  // of magnitude above a pin's gel shear stiffness, so pins move together tangentially
-  // and each has its own normal DOF. Otherwise it is fixed and pins shear on their own.
-  mjcf::Element& shell = part.body;
-  shell.Set("name", names.Shell());
+// What every pin body of one skin shares: the radii, the joints' damping and which pins
+// carry a normal DOF, a contact geom and an outer site.
+struct PinBodyPlan {
+  const SkinConfig& skin;
+  const ContactConfig& contact;
+  const SkinMechanics& mech;
+  const SkinNames& names;
+  double rc = 0.0;        // contact sphere radius (m)
+  double rb = 0.0;        // pin body origin = centre of the contact sphere, from the dome centre (m)
+  double r_marker = 0.0;  // the marker (pin inner end) from the dome centre (m)
+  double c_tip = 0.0, c_normal = 0.0;
+  bool shell_mode = false;
+  std::vector<bool> normal_dof, collidable, outer_site;
+};
+
+// The skin shell body: a comment with the mechanics, its inertia, and in shell mode its two
+// in-plane slide joints on the gel (shear springs of all pins in parallel).
+void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
+  const SkinConfig& skin = plan.skin;
+  const SkinMechanics& mech = plan.mech;
+  shell.Set("name", plan.names.Shell());
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
                             "shear damping {:.3g} N s/m, normal damping {:.3g} N s/m",
-                            skin.pattern, skin.coupling, lattice.size(), mech.k_normal_N_m, mech.k_shear_N_m,
+                            skin.pattern, skin.coupling, n_pins, mech.k_normal_N_m, mech.k_shear_N_m,
                             mech.k_bend_N_m, mech.membrane_N_m, mech.k_rock_N_m, mech.k_tip_N_m, mech.k_couple_N_m,
-                            c_tip, c_normal));
+                            plan.c_tip, plan.c_normal));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
+  if (!plan.shell_mode) return;
   for (const char* axis : {"y", "z"}) {
-    if (!shell_mode) break;
     shell.Add("joint")
-        .Set("name", names.Part(std::string("skin_shear_") + axis))
+        .Set("name", plan.names.Part(std::string("skin_shear_") + axis))
         .Set("type", "slide")
         .Set("axis", std::string(axis) == "y" ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
-        .Set("stiffness", n * mech.k_shear_N_m)
+        .Set("stiffness", static_cast<double>(n_pins) * mech.k_shear_N_m)
         .Set("damping", mech.shell_damping_Ns_m);
   }
-  // In a membrane lattice, pins that cannot touch anything keep their two shear DOFs but
-  // no normal DOF: the skin beyond the contact rests on the gel and is dragged along by
-  // the membrane (its coupling length spans several rings), while its normal motion is
-  // not loaded by anything.
-  std::vector<bool> normal_dof(lattice.size(), true);
-  if (membrane) normal_dof = collidable;
-  // One body per pin: a normal slide joint on its gel column, a spherical contact
-  // patch whose outer surface lies on the contact surface, and sites at both ends.
-  for (const auto& pin : lattice.pins) {
-    const int i = pin.index;
-    const auto& nrm = pin.normal;
-    const double rb = R_out - rc;  // body origin = centre of the contact sphere
-    mjcf::Element& b = shell.Add("body");
-    b.Set("name", names.PinBody(i)).Set("pos", std::vector<double>{rb * nrm[0], rb * nrm[1], rb * nrm[2]});
-    b.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.pin_mass_kg)
-        .Set("diaginertia", std::vector<double>{1e-9, 1e-9, 1e-9});
-    if (normal_dof[i]) {
+}
+
+// One pin body: a normal slide joint on its gel column, its own shear joints unless the
+// shell carries them, a spherical contact patch whose outer surface lies on the contact
+// surface, and sites at both ends.
+void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry& pin) {
+  const int i = pin.index;
+  const auto& nrm = pin.normal;
+  const SkinMechanics& mech = plan.mech;
+  const SkinNames& names = plan.names;
+  const double rb = plan.rb, rc = plan.rc;
+  mjcf::Element& b = shell.Add("body");
+  b.Set("name", names.PinBody(i)).Set("pos", std::vector<double>{rb * nrm[0], rb * nrm[1], rb * nrm[2]});
+  b.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.pin_mass_kg)
+      .Set("diaginertia", std::vector<double>{1e-9, 1e-9, 1e-9});
+  if (plan.normal_dof[i]) {
+    b.Add("joint")
+        .Set("name", names.PinJoint(i))
+        .Set("user", std::vector<double>{kCompressionJointUser})
+        .Set("type", "slide")
+        .Set("axis", std::vector<double>{1, 0, 0})
+        .Set("stiffness", mech.k_normal_N_m)
+        .Set("damping", plan.c_normal);
+  }
+  if (!plan.shell_mode) {
+    // The pin's own shear springs: gel column (in series with its ridge).
+    for (char axis : {'y', 'z'}) {
       b.Add("joint")
-          .Set("name", names.PinJoint(i))
-          .Set("user", std::vector<double>{kCompressionJointUser})
+          .Set("name", names.PinShearJoint(i, axis))
           .Set("type", "slide")
-          .Set("axis", std::vector<double>{1, 0, 0})
-          .Set("stiffness", mech.k_normal_N_m)
-          .Set("damping", c_normal);
-    }
-    if (!shell_mode) {
-      // The pin's own shear springs: gel column (in series with its ridge).
-      for (char axis : {'y', 'z'}) {
-        b.Add("joint")
-            .Set("name", names.PinShearJoint(i, axis))
-            .Set("type", "slide")
-            .Set("axis", axis == 'y' ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
-            .Set("stiffness", mech.k_tip_N_m)
-            .Set("damping", c_tip);
-      }
-    }
-    if (collidable[i]) {
-      b.Add("geom")
-          .Set("name", names.PinGeom(i))
-          .Set("type", "sphere")
-          .Set("size", std::vector<double>{rc})
-          .SetInt("contype", 0)
-          .SetInt("conaffinity", 2)
-          .SetInt("condim", 3)
-          .Set("friction", std::vector<double>{contact.friction, 0.005, 0.0001})
-          .Set("solref", std::vector<double>{contact.timeconst_s, 1.0})
-          .Set("solimp", contact.Solimp())
-          .Set("rgba", std::vector<double>{0.9, 0.9, 0.9, 1});
-      ++part.n_collidable;
-    }
-    const double inner = r_marker - rb;
-    b.Add("site").Set("name", names.PinSite(i)).Set("pos", std::vector<double>{inner * nrm[0], inner * nrm[1], inner * nrm[2]})
-        .Set("size", std::vector<double>{0.0005});
-    if (outer_site[i]) {
-      b.Add("site").Set("name", names.PinOuterSite(i)).Set("pos", std::vector<double>{rc * nrm[0], rc * nrm[1], rc * nrm[2]})
-          .Set("size", std::vector<double>{0.0003});
+          .Set("axis", axis == 'y' ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
+          .Set("stiffness", mech.k_tip_N_m)
+          .Set("damping", plan.c_tip);
     }
   }
-  // A spring between two DOFs (or from one DOF to the anchored skin) as a fixed tendon.
+  if (plan.collidable[i]) {
+    const ContactConfig& contact = plan.contact;
+    b.Add("geom")
+        .Set("name", names.PinGeom(i))
+        .Set("type", "sphere")
+        .Set("size", std::vector<double>{rc})
+        .SetInt("contype", 0)
+        .SetInt("conaffinity", 2)
+        .SetInt("condim", 3)
+        .Set("friction", std::vector<double>{contact.friction, 0.005, 0.0001})
+        .Set("solref", std::vector<double>{contact.timeconst_s, 1.0})
+        .Set("solimp", contact.Solimp())
+        .Set("rgba", std::vector<double>{0.9, 0.9, 0.9, 1});
+  }
+  const double inner = plan.r_marker - rb;
+  b.Add("site").Set("name", names.PinSite(i)).Set("pos", std::vector<double>{inner * nrm[0], inner * nrm[1], inner * nrm[2]})
+      .Set("size", std::vector<double>{0.0005});
+  if (plan.outer_site[i]) {
+    b.Add("site").Set("name", names.PinOuterSite(i)).Set("pos", std::vector<double>{rc * nrm[0], rc * nrm[1], rc * nrm[2]})
+        .Set("size", std::vector<double>{0.0003});
+  }
+}
+
+// Skin bending couples the normal motion of neighbouring pins; in a membrane lattice the
+// membrane (through the ridges) couples their shear motion. Each spring between two DOFs
+// (or from one DOF to the anchored skin) is a fixed tendon.
+std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLattice& lattice) {
+  std::vector<mjcf::Element> tendons;
+  const SkinNames& names = plan.names;
   auto spring = [&](const std::string& name, const std::string& j0, bool m0, const std::string& j1, bool m1,
                     double k) {
     if ((!m0 && !m1) || k <= 0.0) return;
@@ -414,22 +417,62 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     t.Set("name", names.Part(name)).Set("stiffness", k);
     if (m0) t.Add("joint").Set("joint", j0).Set("coef", 1.0);
     if (m1) t.Add("joint").Set("joint", j1).Set("coef", -1.0);
-    part.tendons.push_back(std::move(t));
+    tendons.push_back(std::move(t));
   };
-  // Skin bending couples the normal motion of neighbouring pins; in a membrane lattice
-  // the membrane (through the ridges) couples their shear motion.
-  if (skin.coupling != "none") {
-    for (const auto& e : lattice.neighbours) {
-      const bool m0 = normal_dof[e[0]], m1 = normal_dof[e[1]];
-      spring(fmt::format("bend_{}_{}", e[0], e[1]), names.PinJoint(e[0]), m0, names.PinJoint(e[1]), m1,
-             mech.k_bend_N_m);
-      if (!membrane) continue;
-      for (char axis : {'y', 'z'}) {
-        spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), names.PinShearJoint(e[0], axis), true,
-               names.PinShearJoint(e[1], axis), true, mech.k_couple_N_m);
-      }
+  if (plan.skin.coupling == "none") return tendons;
+  const bool membrane = plan.skin.coupling == "membrane";
+  for (const auto& e : lattice.neighbours) {
+    const bool m0 = plan.normal_dof[e[0]], m1 = plan.normal_dof[e[1]];
+    spring(fmt::format("bend_{}_{}", e[0], e[1]), names.PinJoint(e[0]), m0, names.PinJoint(e[1]), m1,
+           plan.mech.k_bend_N_m);
+    if (!membrane) continue;
+    for (char axis : {'y', 'z'}) {
+      spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), names.PinShearJoint(e[0], axis), true,
+             names.PinShearJoint(e[1], axis), true, plan.mech.k_couple_N_m);
     }
   }
+  return tendons;
+}
+
+}  // namespace
+
+SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
+                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site,
+                   const SkinNames& names) {
+  const SkinMechanics mech = SkinMechanics::From(skin, lattice);
+  const double R = skin.radius_mm * 1e-3;
+  const double R_out = skin.OuterRadiusMm() * 1e-3;
+  const bool membrane = skin.coupling == "membrane";
+  PinBodyPlan plan{skin, contact, mech, names};
+  plan.rc = skin.ContactRadiusMm() * 1e-3;
+  plan.rb = R_out - plan.rc;
+  // The marker the internal camera sees: the inner end of the pin.
+  plan.r_marker = R - (skin.thickness_mm + skin.pin_length_mm) * 1e-3;
+  if (skin.pattern == "fingerprint-v1") plan.r_marker = R - skin.thickness_mm * 1e-3;  // pins reach out into the ridges
+  if (skin.pattern == "fingerprint-v2") plan.r_marker = R_out - skin.pin_length_mm * 1e-3;  // through the skin at the peak
+  plan.c_tip = membrane ? mech.TipDamping(timestep_s) : mech.tip_damping_Ns_m;
+  plan.c_normal = membrane ? mech.NormalDamping(timestep_s) : mech.pin_damping_Ns_m;
+  plan.shell_mode = skin.coupling == "shell";
+  // In a membrane lattice, pins that cannot touch anything keep their two shear DOFs but
+  // no normal DOF: the skin beyond the contact rests on the gel and is dragged along by
+  // the membrane (its coupling length spans several rings), while its normal motion is
+  // not loaded by anything.
+  plan.normal_dof = membrane ? collidable : std::vector<bool>(lattice.size(), true);
+  plan.collidable = collidable;
+  plan.outer_site = outer_site;
+
+  SkinPart part;
+  part.collidable = collidable;
+  // The skin shell. In shell mode it translates in-plane on the gel: the membrane's
+  // in-plane stiffness E t is two to three orders of magnitude above a pin's gel shear
+  // stiffness, so pins move together tangentially and each has its own normal DOF.
+  // Otherwise it is fixed and pins shear on their own.
+  AddShell(part.body, plan, lattice.size());
+  for (const auto& pin : lattice.pins) {
+    AddPinBody(part.body, plan, pin);
+    if (collidable[pin.index]) ++part.n_collidable;
+  }
+  part.tendons = CouplingTendons(plan, lattice);
   return part;
 }
 
