@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -90,12 +91,74 @@ void Standardizer::ApplyRows(Eigen::MatrixXf& x) const {
   }
 }
 
+namespace {
+
+// Fold f's out-of-fold predictions for every candidate: fit on the other folds' rows
+// (standardised with their statistics only), predict this fold's rows into `oof` (each
+// fold writes only its own rows). A one-class training side predicts its class.
+void PredictFold(const TrainingSet& ts, const std::vector<int>& fold, int f, const std::vector<CvCandidate>& grid,
+                 const CvFitPredict& fit, std::vector<std::vector<int>>& oof) {
+  const int n = static_cast<int>(ts.y.size());
+  const Eigen::Index d = ts.x.cols();
+  std::vector<int> train_rows, test_rows;
+  for (int r = 0; r < n; ++r) (fold[r] == f ? test_rows : train_rows).push_back(r);
+  Eigen::MatrixXf x_train(static_cast<Eigen::Index>(train_rows.size()), d);
+  Eigen::MatrixXf x_test(static_cast<Eigen::Index>(test_rows.size()), d);
+  std::vector<int> y_train(train_rows.size());
+  for (size_t i = 0; i < train_rows.size(); ++i) {
+    x_train.row(static_cast<Eigen::Index>(i)) = ts.x.row(train_rows[i]);
+    y_train[i] = ts.y[train_rows[i]];
+  }
+  for (size_t i = 0; i < test_rows.size(); ++i) x_test.row(static_cast<Eigen::Index>(i)) = ts.x.row(test_rows[i]);
+  const Standardizer s = Standardizer::Fit(x_train);
+  s.ApplyRows(x_train);
+  s.ApplyRows(x_test);
+  const bool has_slip = std::find(y_train.begin(), y_train.end(), 1) != y_train.end();
+  const bool has_static = std::find(y_train.begin(), y_train.end(), 0) != y_train.end();
+  std::vector<std::vector<int>> pred;
+  if (has_slip && has_static) {
+    pred = fit(x_train, y_train, x_test, grid);
+  } else {
+    pred.assign(grid.size(), std::vector<int>(test_rows.size(), has_slip ? 1 : 0));
+  }
+  if (pred.size() != grid.size()) throw std::logic_error("CV fit returned the wrong number of candidates");
+  for (size_t c = 0; c < grid.size(); ++c) {
+    if (pred[c].size() != test_rows.size()) throw std::logic_error("CV fit returned the wrong number of rows");
+    for (size_t i = 0; i < test_rows.size(); ++i) oof[c][test_rows[i]] = pred[c][i];
+  }
+}
+
+// Runs run_fold(0 .. folds-1) on up to `folds` threads; errors are rethrown in fold order.
+void ForEachFold(int folds, const std::function<void(int)>& run_fold) {
+  const int n_threads = std::max(1, std::min<int>(folds, static_cast<int>(std::thread::hardware_concurrency())));
+  std::atomic<int> next{0};
+  std::vector<std::exception_ptr> errors(folds);
+  auto worker = [&] {
+    for (int f = next.fetch_add(1); f < folds; f = next.fetch_add(1)) {
+      try {
+        run_fold(f);
+      } catch (...) {
+        errors[f] = std::current_exception();
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> threads;
+    for (int t = 1; t < n_threads; ++t) threads.emplace_back(worker);
+    worker();
+  }
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+}
+
+}  // namespace
+
 CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCandidate>& grid,
                            const CvFitPredict& fit) {
   if (grid.empty()) throw InputError("hyperparameter grid is empty");
   if (k < 2) throw InputError("cv_folds = " + std::to_string(k) + ": must be >= 2");
   const int n = static_cast<int>(ts.y.size());
-  const Eigen::Index d = ts.x.cols();
   CvReport report;
   report.n_rows = n;
   for (int y : ts.y) report.n_slip += y == 1;
@@ -118,61 +181,9 @@ CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCan
   report.folds = folds;
   const std::vector<int> fold = GroupFolds(ts.group, folds);
 
-  // Out-of-fold predictions per candidate; every fold writes only its own rows.
+  // Out-of-fold predictions per candidate.
   std::vector<std::vector<int>> oof(grid.size(), std::vector<int>(n, 0));
-  auto run_fold = [&](int f) {
-    // Split the rows of this fold.
-    std::vector<int> train_rows, test_rows;
-    for (int r = 0; r < n; ++r) (fold[r] == f ? test_rows : train_rows).push_back(r);
-    Eigen::MatrixXf x_train(static_cast<Eigen::Index>(train_rows.size()), d);
-    Eigen::MatrixXf x_test(static_cast<Eigen::Index>(test_rows.size()), d);
-    std::vector<int> y_train(train_rows.size());
-    for (size_t i = 0; i < train_rows.size(); ++i) {
-      x_train.row(static_cast<Eigen::Index>(i)) = ts.x.row(train_rows[i]);
-      y_train[i] = ts.y[train_rows[i]];
-    }
-    for (size_t i = 0; i < test_rows.size(); ++i) x_test.row(static_cast<Eigen::Index>(i)) = ts.x.row(test_rows[i]);
-    // Standardise with statistics of the training side only.
-    const Standardizer s = Standardizer::Fit(x_train);
-    s.ApplyRows(x_train);
-    s.ApplyRows(x_test);
-    // Fit and predict; a one-class training side predicts its class.
-    const bool has_slip = std::find(y_train.begin(), y_train.end(), 1) != y_train.end();
-    const bool has_static = std::find(y_train.begin(), y_train.end(), 0) != y_train.end();
-    std::vector<std::vector<int>> pred;
-    if (has_slip && has_static) {
-      pred = fit(x_train, y_train, x_test, grid);
-    } else {
-      pred.assign(grid.size(), std::vector<int>(test_rows.size(), has_slip ? 1 : 0));
-    }
-    if (pred.size() != grid.size()) throw std::logic_error("CV fit returned the wrong number of candidates");
-    for (size_t c = 0; c < grid.size(); ++c) {
-      if (pred[c].size() != test_rows.size()) throw std::logic_error("CV fit returned the wrong number of rows");
-      for (size_t i = 0; i < test_rows.size(); ++i) oof[c][test_rows[i]] = pred[c][i];
-    }
-  };
-
-  // Run the folds on a few threads; errors are rethrown in fold order.
-  const int n_threads = std::max(1, std::min<int>(folds, static_cast<int>(std::thread::hardware_concurrency())));
-  std::atomic<int> next{0};
-  std::vector<std::exception_ptr> errors(folds);
-  auto worker = [&] {
-    for (int f = next.fetch_add(1); f < folds; f = next.fetch_add(1)) {
-      try {
-        run_fold(f);
-      } catch (...) {
-        errors[f] = std::current_exception();
-      }
-    }
-  };
-  {
-    std::vector<std::jthread> threads;
-    for (int t = 1; t < n_threads; ++t) threads.emplace_back(worker);
-    worker();
-  }
-  for (const auto& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
+  ForEachFold(folds, [&](int f) { PredictFold(ts, fold, f, grid, fit, oof); });
 
   // Score every candidate on the pooled out-of-fold predictions; first best wins.
   report.best_f1 = -1.0;
