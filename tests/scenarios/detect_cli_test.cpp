@@ -99,6 +99,47 @@ TEST_F(DetectCliTest, TrainEvaluateAndDetectEveryKind) {
   }
 }
 
+TEST_F(DetectCliTest, CommandsReadingFlaggedRunsSaySoInOneLine) {
+  // A healthy dataset: no note.
+  const CliResult healthy = Run("report incipient " + P("d.h5"));
+  ASSERT_EQ(healthy.code, 0) << healthy.err;
+  EXPECT_EQ(healthy.err.find("flagged by run health"), std::string::npos) << healthy.err;
+  // Every run flagged (the creep threshold at 0 flags the few micrometres every run has).
+  const std::string flagged = P("flagged.h5");
+  const CliResult g = Run("generate rail --runs 2 --speed-mm-s 1 --set rail.lift_mm=10 --set rail.hold_s=0.1 "
+                          "--set health.max_stick_creep_um=0 --seed 5 --quiet --out " + flagged);
+  ASSERT_EQ(g.code, 0) << g.err;
+  const std::string model = P("flagged.model");
+  const CliResult t = Run("train threshold --data " + flagged + " --runs 0 --out " + model);
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_NE(t.err.find("tactip: note: 1 of the 1 run(s) read from '" + flagged +
+                       "' are flagged by run health (health_ok = 0): run(s) 0; their ground truth is not to be "
+                       "trusted ('tactip info " + flagged + "' gives the reasons)\n"),
+            std::string::npos)
+      << t.err;
+  const CliResult e = Run("evaluate --model " + model + " --data " + flagged + " --runs 1");
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_NE(e.err.find("1 of the 1 run(s) read from '" + flagged + "' are flagged by run health (health_ok = 0): run(s) 1;"),
+            std::string::npos)
+      << e.err;
+  const CliResult d = Run("detect --model " + model + " --data " + flagged + " --out " + P("flagged.csv"));
+  ASSERT_EQ(d.code, 0) << d.err;
+  EXPECT_NE(d.err.find("2 of the 2 run(s) read from '" + flagged + "' are flagged by run health (health_ok = 0): run(s) 0, 1;"),
+            std::string::npos)
+      << d.err;
+  for (const char* what : {"incipient", "signatures"}) {
+    const CliResult r = Run(std::string("report ") + what + " " + flagged);
+    ASSERT_EQ(r.code, 0) << what << ": " << r.err;
+    EXPECT_NE(r.err.find("are flagged by run health (health_ok = 0): run(s) 0, 1;"), std::string::npos)
+        << what << ": " << r.err;
+  }
+  const CliResult p = Run("plot " + flagged + " --run 1 --no-plots --out " + P("figs"));
+  ASSERT_EQ(p.code, 0) << p.err;
+  EXPECT_NE(p.err.find("1 of the 1 run(s) read from '" + flagged + "' are flagged by run health (health_ok = 0): run(s) 1;"),
+            std::string::npos)
+      << p.err;
+}
+
 TEST_F(DetectCliTest, SameDataAndSeedGiveTheSameModel) {
   ASSERT_EQ(Run("train svm --data " + P("d.h5") + " --runs 0-3 --seed 3 --out " + P("a.model")).code, 0);
   ASSERT_EQ(Run("train svm --data " + P("d.h5") + " --runs 0-3 --seed 3 --out " + P("b.model")).code, 0);

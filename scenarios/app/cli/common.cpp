@@ -1,11 +1,14 @@
 #include "scenarios/app/cli/common.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "models/skin.h"
 #include "scenarios/app/cli/option_checks.h"
@@ -169,6 +172,31 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
     for (const auto& f : flagged) std::printf("  %s\n", f.c_str());
   }
   if (with_config) std::printf("config:\n%s", h.config_yaml.c_str());
+}
+
+std::vector<int> FlaggedRuns(const DatasetReader& reader, const std::vector<int>& runs) {
+  const std::vector<int>& present = reader.run_indices();
+  std::vector<int> flagged;
+  for (int idx : runs.empty() ? present : runs) {
+    if (!std::binary_search(present.begin(), present.end(), idx)) continue;
+    if (Attr(reader.ReadRunSummary(idx), "health_ok") == 0.0) flagged.push_back(idx);
+  }
+  std::sort(flagged.begin(), flagged.end());
+  flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
+  return flagged;
+}
+
+void NoteFlaggedRuns(const std::string& path, const std::vector<int>& runs) {
+  const std::filesystem::path file(path);
+  if (file.extension() == ".csv") return;
+  const DatasetReader reader(path);
+  const std::vector<int> flagged = FlaggedRuns(reader, runs);
+  if (flagged.empty()) return;
+  const size_t read = runs.empty() ? reader.run_indices().size() : runs.size();
+  std::fprintf(stderr,
+               "tactip: note: %zu of the %zu run(s) read from '%s' are flagged by run health (health_ok = 0): "
+               "run(s) %s; their ground truth is not to be trusted ('tactip info %s' gives the reasons)\n",
+               flagged.size(), read, path.c_str(), fmt::format("{}", fmt::join(flagged, ", ")).c_str(), path.c_str());
 }
 
 }  // namespace tactip::cli

@@ -59,4 +59,14 @@ CLI::Option* AddSensorOption(CLI::App* c, std::string& sensor);
 /// stored config.
 void PrintDatasetSummary(const std::string& path, bool with_config);
 
+/// The runs (all of the dataset's, or those of `runs` it has) that run health flagged
+/// (health_ok = 0), ascending. Files written before run health have none.
+std::vector<int> FlaggedRuns(const DatasetReader& reader, const std::vector<int>& runs = {});
+
+/// For a command that reads the runs `runs` (empty: all) of the HDF5 dataset `path`: one
+/// line on stderr when any of them is flagged by run health, saying how many, which, and
+/// that their ground truth is not to be trusted. Nothing for a CSV recording or when no
+/// run is flagged.
+void NoteFlaggedRuns(const std::string& path, const std::vector<int>& runs = {});
+
 }  // namespace tactip::cli

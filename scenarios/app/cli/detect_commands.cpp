@@ -200,6 +200,7 @@ int RunTrain(const DetectArgs& s, const CLI::App* train, const std::vector<int>&
   const TrainOptions opts = s.train.Options();
   CheckWritableLocation(s.out);
   const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame, s.sensor, ParsePinSource(s.pins));
+  NoteFlaggedRuns(s.data, runs);
   const std::string kind = s.kind == "svm" ? "svm-" + s.kernel : s.kind;
   if (kind != "threshold") s.train.CheckFolds(train, data.size());  // only the others cross-validate
   const std::unique_ptr<Detector> det = TrainDetector(kind, data, opts);
@@ -227,6 +228,7 @@ int RunDetect(const DetectArgs& s, const std::vector<int>& runs) {
   const bool incipient = det->name() == "incipient";
   det = WithResponse(std::move(det), s.response);
   const std::vector<LabeledRun> data = LoadFrames(s.data, runs, s.sensor, ParsePinSource(s.pins));
+  NoteFlaggedRuns(s.data, runs);
   size_t frames = 0;
   for (const auto& r : data) frames += r.frames.size();
   WriteFileAtomic(s.out, DecisionsCsv(*det, data, incipient, s.contact_measure));
@@ -252,7 +254,10 @@ int RunSlipBench(const DetectArgs& s, const CLI::App* bench, const std::atomic<b
   CheckOutputsAreNotInputs(FilesInFolder("--out", o.out_dir, BenchOutputFiles(o)),
                            {{"--dataset", o.dataset}, {"--config", s.config}});
   const size_t runs = o.dataset.empty() ? static_cast<size_t>(o.runs) : DatasetReader(o.dataset).run_indices().size();
-  if (!o.dataset.empty()) CheckSensorOption(o.dataset, o.sensor);
+  if (!o.dataset.empty()) {
+    CheckSensorOption(o.dataset, o.sensor);
+    NoteFlaggedRuns(o.dataset);
+  }
   s.train.CheckFolds(bench, runs / 2);  // the first half trains
   std::vector<std::string> sets;
   if (!std::isnan(s.speed)) sets.push_back(fmt::format("rail.retract_speed_mm_s={}", s.speed));
@@ -402,8 +407,10 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     if (*train) return RunTrain(*s, train, runs);
     if (*eval) {
       std::unique_ptr<Detector> det = WithResponse(LoadDetector(s->model), s->response);
-      const Evaluation e =
-          Evaluate(*det, LoadDatasetRuns(s->data, runs, s->score_onset_frame, s->sensor, ParsePinSource(s->pins)), s->train.n_slip);
+      const std::vector<LabeledRun> data =
+          LoadDatasetRuns(s->data, runs, s->score_onset_frame, s->sensor, ParsePinSource(s->pins));
+      NoteFlaggedRuns(s->data, runs);
+      const Evaluation e = Evaluate(*det, data, s->train.n_slip);
       std::printf("%s", FormatEvaluation(e, s->per_run).c_str());
       return 0;
     }

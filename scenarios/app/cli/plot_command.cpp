@@ -51,6 +51,7 @@ int RunPlotCommand(const PlotArgs& a) {
   // the run, the sensor and the plotting tool.
   CheckOutputFolder(a);
   const RunForFigures run = ReadRunForFigures(a.dataset, a.run, a.sensor);
+  NoteFlaggedRuns(a.dataset, {a.run});
   if (!a.no_plots) CheckPlotting();
   NewFolderGuard folder(a.out);
   std::error_code ec;
