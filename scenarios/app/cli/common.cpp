@@ -117,6 +117,11 @@ std::string SensorsText(const RunRecord& run) {
 
 }  // namespace
 
+bool FlaggedByHealth(const RunRecord& r) {
+  const double ok = Attr(r, "health_ok");
+  return !std::isnan(ok) && ok <= 0.0;
+}
+
 void PrintDatasetSummary(const std::string& path, bool with_config) {
   DatasetReader reader(path);
   const auto& h = reader.header();
@@ -152,9 +157,8 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
       ++err_n;
     }
     // Run health: ok, flagged (with the reason listed below), or not measured (older files).
-    const double ok = Attr(r, "health_ok");
-    const char* health = std::isnan(ok) ? "-" : (ok > 0.0 ? "ok" : "FLAGGED");
-    if (!std::isnan(ok) && ok <= 0.0) {
+    const char* health = std::isnan(Attr(r, "health_ok")) ? "-" : (FlaggedByHealth(r) ? "FLAGGED" : "ok");
+    if (FlaggedByHealth(r)) {
       auto it = r.text_attrs.find("health_reason");
       flagged.push_back(fmt::format("run {}: {}", idx, it == r.text_attrs.end() ? "" : it->second));
     }
@@ -179,17 +183,14 @@ std::vector<int> FlaggedRuns(const DatasetReader& reader, const std::vector<int>
   std::vector<int> flagged;
   for (int idx : runs.empty() ? present : runs) {
     if (!std::binary_search(present.begin(), present.end(), idx)) continue;
-    if (Attr(reader.ReadRunSummary(idx), "health_ok") == 0.0) flagged.push_back(idx);
+    if (FlaggedByHealth(reader.ReadRunSummary(idx))) flagged.push_back(idx);
   }
   std::sort(flagged.begin(), flagged.end());
   flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
   return flagged;
 }
 
-void NoteFlaggedRuns(const std::string& path, const std::vector<int>& runs) {
-  const std::filesystem::path file(path);
-  if (file.extension() == ".csv") return;
-  const DatasetReader reader(path);
+void NoteFlaggedRuns(const DatasetReader& reader, const std::string& path, const std::vector<int>& runs) {
   const std::vector<int> flagged = FlaggedRuns(reader, runs);
   if (flagged.empty()) return;
   const size_t read = runs.empty() ? reader.run_indices().size() : runs.size();
@@ -197,6 +198,11 @@ void NoteFlaggedRuns(const std::string& path, const std::vector<int>& runs) {
                "tactip: note: %zu of the %zu run(s) read from '%s' are flagged by run health (health_ok = 0): "
                "run(s) %s; their ground truth is not to be trusted ('tactip info %s' gives the reasons)\n",
                flagged.size(), read, path.c_str(), fmt::format("{}", fmt::join(flagged, ", ")).c_str(), path.c_str());
+}
+
+void NoteFlaggedRuns(const std::string& path, const std::vector<int>& runs) {
+  if (std::filesystem::path(path).extension() == ".csv") return;
+  NoteFlaggedRuns(DatasetReader(path), path, runs);
 }
 
 }  // namespace tactip::cli

@@ -59,6 +59,10 @@ CLI::Option* AddSensorOption(CLI::App* c, std::string& sensor);
 /// stored config.
 void PrintDatasetSummary(const std::string& path, bool with_config);
 
+/// True when run health flagged the run (health_ok = 0); false for a healthy run and for
+/// files written before run health.
+bool FlaggedByHealth(const RunRecord& r);
+
 /// The runs (all of the dataset's, or those of `runs` it has) that run health flagged
 /// (health_ok = 0), ascending. Files written before run health have none.
 std::vector<int> FlaggedRuns(const DatasetReader& reader, const std::vector<int>& runs = {});
@@ -68,5 +72,7 @@ std::vector<int> FlaggedRuns(const DatasetReader& reader, const std::vector<int>
 /// that their ground truth is not to be trusted. Nothing for a CSV recording or when no
 /// run is flagged.
 void NoteFlaggedRuns(const std::string& path, const std::vector<int>& runs = {});
+/// The same for a dataset already open as `reader` (`path` names it in the line).
+void NoteFlaggedRuns(const DatasetReader& reader, const std::string& path, const std::vector<int>& runs = {});
 
 }  // namespace tactip::cli

@@ -137,7 +137,7 @@ int RunReport(const StudyArgs& a) {
   if (!a.report_csv.empty()) CheckWritableLocation(a.report_csv);
   CheckSensorOption(a.report_path, a.report_sensor);
   const DatasetReader reader(a.report_path);
-  NoteFlaggedRuns(a.report_path);
+  NoteFlaggedRuns(reader, a.report_path);
   if (a.report_what == "signatures") return RunSignatureReport(a, reader);
   std::vector<IncipientRunMetrics> metrics;
   for (int idx : reader.run_indices()) {
@@ -153,7 +153,7 @@ int RunReport(const StudyArgs& a) {
 int RunTrackingReport(const StudyArgs& a) {
   CheckSensorOption(a.report_path, a.report_sensor);
   const DatasetReader reader(a.report_path);
-  NoteFlaggedRuns(a.report_path);
+  NoteFlaggedRuns(reader, a.report_path);
   const RailScenarioConfig stored = StoredRailConfig(reader.header());
   std::vector<TrackingFigures> rows, totals;
   for (int idx : reader.run_indices()) {
