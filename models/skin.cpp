@@ -315,12 +315,14 @@ struct PinBodyPlan {
   const ContactConfig& contact;
   const SkinMechanics& mech;
   const SkinNames& names;
+  const std::vector<bool>& collidable;  // pins with a contact geom
+  const std::vector<bool>& outer_site;  // pins with a site at their outer contact point
   double rc = 0.0;        // contact sphere radius (m)
   double rb = 0.0;        // pin body origin = centre of the contact sphere, from the dome centre (m)
   double r_marker = 0.0;  // the marker (pin inner end) from the dome centre (m)
   double c_tip = 0.0, c_normal = 0.0;
   bool shell_mode = false;
-  std::vector<bool> normal_dof, collidable, outer_site;
+  std::vector<bool> normal_dof{};  // pins with a normal slide joint
 };
 
 // The skin shell body: a comment with the mechanics, its inertia, and in shell mode its two
@@ -443,7 +445,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   const double R = skin.radius_mm * 1e-3;
   const double R_out = skin.OuterRadiusMm() * 1e-3;
   const bool membrane = skin.coupling == "membrane";
-  PinBodyPlan plan{skin, contact, mech, names};
+  PinBodyPlan plan{skin, contact, mech, names, collidable, outer_site};
   plan.rc = skin.ContactRadiusMm() * 1e-3;
   plan.rb = R_out - plan.rc;
   // The marker the internal camera sees: the inner end of the pin.
@@ -458,8 +460,6 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   // the membrane (its coupling length spans several rings), while its normal motion is
   // not loaded by anything.
   plan.normal_dof = membrane ? collidable : std::vector<bool>(lattice.size(), true);
-  plan.collidable = collidable;
-  plan.outer_site = outer_site;
 
   SkinPart part;
   part.collidable = collidable;
