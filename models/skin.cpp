@@ -36,9 +36,15 @@ std::vector<std::string> SkinPreset(const std::string& name) {
   throw InputError("--skin '" + config_detail::Escaped(name) + "': unknown skin (known: smooth, fingerprint-v1, fingerprint-v2)");
 }
 
+std::optional<double> SkinPresetTimestep(const std::string& name) {
+  if (name == "fingerprint-v1") return kShearDofValidatedStepS;
+  if (name == "fingerprint-v2") return kFingerprintV2StepS;
+  return std::nullopt;
+}
+
 std::vector<std::string> SkinPresetOverrides(const std::string& name) {
   std::vector<std::string> keys = SkinPreset(name);
-  if (name != "smooth") keys.push_back(fmt::format("sim.timestep_s={}", kShearDofValidatedStepS));
+  if (const auto step = SkinPresetTimestep(name)) keys.push_back(fmt::format("sim.timestep_s={}", *step));
   return keys;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -289,8 +290,18 @@ std::vector<std::string> SkinPreset(const std::string& name);
 /// ShearDofValidatedTimestep in models/stability.h).
 inline constexpr double kShearDofValidatedStepS = 0.001;
 
+/// The step the fingerprint-v2 preset sets, s. At the 1 ms validated step v2's edge contacts
+/// lift off and touch the object again as the ridges let go in turn (9 of 10 incipient runs
+/// flagged by run health, one pin at 0.02-55 mN); at 0.5 ms 1 of 10 (0.02 mN), and its gross
+/// onset is within 0.07 s of the 0.25 ms reference against 0.26 s at 1 ms (README, Accuracy).
+inline constexpr double kFingerprintV2StepS = 0.0005;
+
+/// The step `--skin NAME` sets: none for the smooth skin (the scene's default), the validated
+/// step kShearDofValidatedStepS for fingerprint-v1, kFingerprintV2StepS for fingerprint-v2.
+std::optional<double> SkinPresetTimestep(const std::string& name);
+
 /// What `--skin NAME` sets in a scene's config: SkinPreset and, for a fingerprint skin (per-pin
-/// shear DOFs), its validated step sim.timestep_s = kShearDofValidatedStepS.
+/// shear DOFs), its step sim.timestep_s = SkinPresetTimestep(name).
 std::vector<std::string> SkinPresetOverrides(const std::string& name);
 
 /// Names of a skin's elements in the MJCF, so scenarios can look the parts up. Every name

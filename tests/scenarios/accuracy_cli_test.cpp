@@ -104,7 +104,7 @@ TEST_F(AccuracyCliTest, BadSceneOrSettingIsRefusedWithOneLine) {
 }
 
 TEST_F(AccuracyCliTest, TimestepsAreSweptAroundTheScenesOwnDefaultStep) {
-  // The rail scene's smooth skin runs at 2 ms, the incipient scene's fingerprint-v2 at 1 ms:
+  // The rail scene's smooth skin runs at 2 ms, the incipient scene's fingerprint-v2 at 0.5 ms:
   // each reference is a quarter of that, each sweep half, three quarters and 1.25 times it.
   CliResult r = Run("accuracy rail --list");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -113,11 +113,11 @@ TEST_F(AccuracyCliTest, TimestepsAreSweptAroundTheScenesOwnDefaultStep) {
       << r.out;
   r = Run("accuracy incipient --list");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("sim.timestep_s=0.00025 sim.iterations=100"), std::string::npos) << r.out;
-  for (const char* s : {"dt=0.5ms ", "dt=0.75ms ", "dt=1.25ms "}) EXPECT_NE(r.out.find(s), std::string::npos) << s;
-  EXPECT_EQ(r.out.find("dt=1ms "), std::string::npos) << "the default step is not swept twice";
-  // 4 ms is at least two 1.25 ms steps, so the time constant stays.
-  EXPECT_NE(r.out.find("dt=1.25ms            sim.timestep_s=0.00125\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sim.timestep_s=0.000125 sim.iterations=100"), std::string::npos) << r.out;
+  for (const char* s : {"dt=0.25ms ", "dt=0.375ms ", "dt=0.625ms "}) EXPECT_NE(r.out.find(s), std::string::npos) << s;
+  EXPECT_EQ(r.out.find("dt=0.5ms "), std::string::npos) << "the default step is not swept twice";
+  // 4 ms is at least two 0.625 ms steps, so the time constant stays.
+  EXPECT_NE(r.out.find("dt=0.625ms           sim.timestep_s=0.000625\n"), std::string::npos) << r.out;
 }
 
 TEST(CompareRunsTest, IdenticalRunsDifferByNothingAndAMissedOnsetIsInfinite) {

@@ -43,7 +43,7 @@ const Refusal kRefusals[] = {
      {"sim.timestep_s = 0.005: unstable: exceeds the limit 0.00254 s of the skin's pin normal mode",
       "use sim.timestep_s <= 0.00254"}},
     {"v2-mu-3",
-     {"sim.timestep_s = 0.001: skin.coupling = membrane (per-pin shear DOFs) at contact.friction = 3 is validated up to "
+     {"sim.timestep_s = 5e-04: skin.coupling = membrane (per-pin shear DOFs) at contact.friction = 3 is validated up to "
       "0.000333 s",
       "use sim.timestep_s <= 0.000333"}},
     {"v2-dt-5ms",
@@ -166,20 +166,31 @@ TEST(AutoTimestepTest, ContactTimeConstantAndFrameBoundTheStep) {
 
 TEST(AutoTimestepTest, MembraneSkinKeepsItsPhysicalDamping) {
   // fingerprint-v2: its stiff shear mode sets the step at which the model need not raise
-  // the lattice's damping.
+  // the lattice's damping. The preset's 0.5 ms is below it, so the damping stays physical.
   RailScenarioConfig c = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2"));
-  const TimestepChoice t = ChooseTimestep(c);
-  EXPECT_EQ(t.binding, "stability");
-  EXPECT_NE(t.stable_mode.find("membrane lattice's shear mode"), std::string::npos) << t.stable_mode;
   const PinLattice lattice = PinLattice::Build(c.skin);
   const SkinMechanics m = SkinMechanics::From(c.skin, lattice);
+  TimestepChoice t = ChooseTimestep(c);
+  EXPECT_EQ(t.binding, "accuracy (the configured sim.timestep_s)");
+  EXPECT_DOUBLE_EQ(t.timestep_s, 0.0005);
+  EXPECT_NEAR(m.TipDamping(t.timestep_s), m.tip_damping_Ns_m, 1e-12);
+  // At the validated 1 ms the shear mode binds.
+  c.sim.timestep_s = 0.001;
+  t = ChooseTimestep(c);
+  EXPECT_EQ(t.binding, "stability");
+  EXPECT_NE(t.stable_mode.find("membrane lattice's shear mode"), std::string::npos) << t.stable_mode;
+  EXPECT_GT(t.timestep_s, 0.0005);
+  EXPECT_LT(t.timestep_s, 0.001);
   EXPECT_NEAR(m.TipDamping(t.timestep_s), m.tip_damping_Ns_m, 1e-12);
   EXPECT_NEAR(m.NormalDamping(t.timestep_s), m.pin_damping_Ns_m, 1e-12);
   EXPECT_GT(m.TipDamping(1.1 * t.bound_s), m.tip_damping_Ns_m) << "just above, the damping would be raised";
+  EXPECT_GT(m.TipDamping(0.001), m.tip_damping_Ns_m) << "at 1 ms it is raised";
 }
 
 TEST(AutoTimestepTest, ShearDofSkinsGetTheirValidatedStepAndAreRefusedAboveIt) {
-  // The fingerprint presets carry their validated 1 ms step; a higher friction shrinks it.
+  // fingerprint-v1 carries the validated 1 ms step, fingerprint-v2 0.5 ms (its edge contacts
+  // chatter at 1 ms); a higher friction shrinks the validated step.
+  EXPECT_DOUBLE_EQ(LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).sim.timestep_s, 0.0005);
   RailScenarioConfig c = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v1"));
   EXPECT_DOUBLE_EQ(c.sim.timestep_s, 0.001);
   EXPECT_DOUBLE_EQ(ShearDofValidatedTimestep(c.skin, c.contact), 0.001);

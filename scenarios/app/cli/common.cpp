@@ -38,8 +38,8 @@ void ConfigArgs::Add(CLI::App* c, bool with_scenario) {
       ->check(NonEmpty("one of flat, acrylic, curved80, curved40, curved20"));
   AddSkin(c,
           "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling and the "
-          "variant's ridge/thickness/pin keys, and for a fingerprint skin its validated step sim.timestep_s = "
-          "0.001; applied before --set).");
+          "variant's ridge/thickness/pin keys, and for a fingerprint skin its step sim.timestep_s: 0.001 for "
+          "v1, 0.0005 for v2; applied before --set).");
 }
 
 void ConfigArgs::AddFileAndSets(CLI::App* c, const std::string& config_help, const std::string& set_help) {
