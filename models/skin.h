@@ -292,8 +292,9 @@ inline constexpr double kShearDofValidatedStepS = 0.001;
 
 /// The step the fingerprint-v2 preset sets, s. At the 1 ms validated step v2's edge contacts
 /// lift off and touch the object again as the ridges let go in turn (9 of 10 incipient runs
-/// flagged by run health, one pin at 0.02-55 mN); at 0.5 ms 1 of 10 (0.02 mN), and its gross
-/// onset is within 0.07 s of the 0.25 ms reference against 0.26 s at 1 ms (README, Accuracy).
+/// flagged by run health, one pin at 0.02-55 mN); at 0.5 ms 1 of 10 (0.02 mN), and the gross
+/// onsets of those ten runs lie 0.08 s (mean) from the 0.25 ms ones against 0.19 s at 1 ms
+/// (README, Numerical stability).
 inline constexpr double kFingerprintV2StepS = 0.0005;
 
 /// The step `--skin NAME` sets: none for the smooth skin (the scene's default), the validated

@@ -36,10 +36,10 @@ void ConfigArgs::Add(CLI::App* c, bool with_scenario) {
   c->add_option("--speed-mm-s", speed_mm_s, "Shortcut for --set rail.retract_speed_mm_s=V.")->check(FiniteNumber());
   c->add_option("--stimulus", stimulus, "Shortcut for --set rail.stimulus=S (flat, acrylic, curved80, curved40, curved20).")
       ->check(NonEmpty("one of flat, acrylic, curved80, curved40, curved20"));
-  AddSkin(c,
-          "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling and the "
-          "variant's ridge/thickness/pin keys, and for a fingerprint skin its step sim.timestep_s: 0.001 for "
-          "v1, 0.0005 for v2; applied before --set).");
+  AddSkin(c, fmt::format("Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling "
+                         "and the variant's ridge/thickness/pin keys, and for a fingerprint skin its step "
+                         "sim.timestep_s: {} for v1, {} for v2; applied before --set).",
+                         *SkinPresetTimestep("fingerprint-v1"), *SkinPresetTimestep("fingerprint-v2")));
 }
 
 void ConfigArgs::AddFileAndSets(CLI::App* c, const std::string& config_help, const std::string& set_help) {
@@ -157,8 +157,9 @@ void PrintDatasetSummary(const std::string& path, bool with_config) {
       ++err_n;
     }
     // Run health: ok, flagged (with the reason listed below), or not measured (older files).
-    const char* health = std::isnan(Attr(r, "health_ok")) ? "-" : (FlaggedByHealth(r) ? "FLAGGED" : "ok");
-    if (FlaggedByHealth(r)) {
+    const bool run_flagged = FlaggedByHealth(r);
+    const char* health = std::isnan(Attr(r, "health_ok")) ? "-" : (run_flagged ? "FLAGGED" : "ok");
+    if (run_flagged) {
       auto it = r.text_attrs.find("health_reason");
       flagged.push_back(fmt::format("run {}: {}", idx, it == r.text_attrs.end() ? "" : it->second));
     }
