@@ -109,6 +109,8 @@ int CompiledModel::JointQposAdr(int j) const { return model_->jnt_qposadr[j]; }
 int CompiledModel::JointDofAdr(int j) const { return model_->jnt_dofadr[j]; }
 void CompiledModel::EnableEnergy() { model_->opt.enableflags |= mjENBL_ENERGY; }
 void CompiledModel::SetGeomFriction(int g, double mu) { model_->geom_friction[3 * g] = mu; }
+void CompiledModel::SetDofDamping(int dof, double c) { model_->dof_damping[dof] = c; }
+double CompiledModel::DofDamping(int dof) const { return model_->dof_damping[dof]; }
 double CompiledModel::GeomFriction(int g) const { return model_->geom_friction[3 * g]; }
 double CompiledModel::timestep() const { return model_->opt.timestep; }
 double CompiledModel::gravity() const { return mju_norm3(model_->opt.gravity); }

@@ -57,6 +57,9 @@ class CompiledModel {
   void EnableEnergy();
   /// Sets the sliding friction coefficient of one geom (the contact uses the max of the pair).
   void SetGeomFriction(int geom, double mu);
+  /// Sets the viscous damping of one dof (N s/m; MuJoCo integrates it implicitly).
+  void SetDofDamping(int dof, double damping);
+  double DofDamping(int dof) const;
   /// Sliding friction coefficient of one geom.
   double GeomFriction(int geom) const;
   /// Physics timestep in seconds.
