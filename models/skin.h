@@ -27,6 +27,7 @@ struct SkinConfig {
   double skin_modulus_mpa = 1.0;    ///< Young's modulus of the skin rubber
   double damping_ratio = 0.7;       ///< damping ratio of each pin's normal mode
   double shear_damping_ratio = 4.0; ///< damping ratio of the skin's in-plane (shear) mode
+  std::string shell_damping = "viscous"; ///< shell skin: viscous (fixed damper) or gel (follows the carried mass)
   double contact_radius_mm = 1.5;   ///< radius of the spherical contact patch at each pin
   std::string coupling = "shell";   ///< how pins are coupled through the skin: shell, membrane or none
   std::string pattern = "smooth";   ///< smooth, fingerprint-v1, fingerprint-v2
@@ -77,6 +78,13 @@ struct SkinConfig {
       "overdamped, so released shear relaxes over a few frames (4 -> ~30 ms time constant), as the multi-frame "
       "slip spike of real TacTips shows.",
       Bounds::Closed(0.0, 20.0));
+    v("shell_damping", shell_damping, "",
+      "How the shell skin's in-plane damper is set (coupling shell). viscous: a fixed damper giving the shell "
+      "alone shear_damping_ratio. gel: a gel with a constant loss tangent (2 x shear_damping_ratio), so every "
+      "mode the shell forms has that damping ratio: the damper follows the mass the shell carries - its own, "
+      "plus the held object's share while its contacts stick (rail and incipient scenarios). With a silicone "
+      "gel's ratio, e.g. 0.05, released shear rings until contact is lost (README 'Slip signatures').",
+      Choices{"viscous", "gel"});
     v("contact_radius_mm", contact_radius_mm, "mm",
       "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",
       Bounds::Closed(0.1, 10.0));
@@ -252,6 +260,7 @@ struct SkinMechanics {
   double k_bend_N_m = 0.0;          ///< skin bending coupling between neighbours' normal motion
   double pin_mass_kg = 0.0;
   double shell_mass_kg = 0.0;       ///< skin membrane mass
+  double shell_moving_mass_kg = 0.0;  ///< what the shell's in-plane joints carry: membrane plus every pin
   double pin_damping_Ns_m = 0.0;    ///< normal-mode damping per pin
   double shell_damping_Ns_m = 0.0;  ///< damping of the skin's in-plane translation
   double membrane_N_m = 0.0;        ///< in-plane membrane stiffness E t (reported, see README)

@@ -92,6 +92,7 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailSceneIds& ids, int ind
       lift_rel_ref_(kNaN),
       creep_ref_(kNaN) {
   AddChannels(cfg, d);
+  shell_damping_ = ShellDamping(cfg, model_, n_);
   model_.EnableEnergy();
   sim_.emplace(model_);
   sim_->Forward();
@@ -183,6 +184,7 @@ bool RailRun::Step(RunRecord& rec) {
   const bool seek_prediction = t >= sched_.retract_start && std::isnan(sum_.predicted_onset_s);
   if (!frame_now && !seek_onset && !seek_prediction && !friction_switching_) return true;
   ReadContacts();
+  if (shell_damping_.active()) UpdateShellDamping();
   if (n_slip_ > 0) slipped_since_frame_ = true;
   for (Channel& ch : channels_) {
     if (ch.friction.switching()) ch.friction.Update(ch.sensor.samples(), ch.sensor.pin_slip(), model_);
@@ -217,6 +219,16 @@ void RailRun::ReadContacts() {
     }
   }
   ReadLabels();
+}
+
+void RailRun::UpdateShellDamping() {
+  std::vector<double> stuck;
+  for (const Channel& ch : channels_) {
+    const FrameLabels& labels = ch.sensor.labels();
+    stuck.push_back(labels.n_contact > 0 ? static_cast<double>(labels.n_contact - labels.n_slip) / labels.n_contact
+                                         : 0.0);
+  }
+  shell_damping_.Update(stuck);
 }
 
 void RailRun::ReadLabels() {

@@ -13,6 +13,7 @@
 
 #include "models/rail_rig.h"
 #include "scenarios/rail/rail_config.h"
+#include "scenarios/rail/shell_damping.h"
 #include "scenarios/rail/rail_controller.h"
 #include "scenarios/rail/rail_scenario.h"
 #include "scenarios/rail/rail_schedule.h"
@@ -106,6 +107,7 @@ class RailRun {
   void AddChannels(const RailScenarioConfig& cfg, const Draws& draws);
   void InitRecord(RunRecord& rec);
   void ReadLabels();
+  void UpdateShellDamping();  // the gel shell's damper from each sensor's stuck contacts
   void ReadContacts();
   void TrackOnset(double t, bool seek_onset);
   void TrackPrediction(double t);
@@ -123,6 +125,7 @@ class RailRun {
   const double depth_m_, mu_;   // this run's press depth and static friction
   CompiledModel model_;         // this run's copy (friction changes per pin)
   std::vector<Channel> channels_;
+  ShellDamping shell_damping_;  // skin.shell_damping = gel: the shell's damper follows the carried mass
   bool friction_switching_ = false;  // some pin's friction changes as it slides
   std::optional<Simulation> sim_;
   const RailSchedule sched_;

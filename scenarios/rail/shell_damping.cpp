@@ -1,0 +1,35 @@
+#include "scenarios/rail/shell_damping.h"
+
+#include <cmath>
+
+#include "models/skin.h"
+
+namespace tactip {
+
+ShellDamping::ShellDamping(const RailScenarioConfig& cfg, CompiledModel& model, int n_pins) {
+  if (cfg.skin.coupling != "shell" || cfg.skin.shell_damping != "gel") return;
+  model_ = &model;
+  for (const SensorMountConfig& mount : cfg.sensors) {
+    const SkinNames names{mount.Prefix()};
+    for (const char* axis : {"skin_shear_y", "skin_shear_z"}) {
+      dofs_.push_back(model.JointDofAdr(model.JointId(names.Part(axis))));
+    }
+  }
+  c_shell_ = model.DofDamping(dofs_.front());
+  const SkinMechanics mech = SkinMechanics::From(cfg.skin, static_cast<size_t>(n_pins));
+  object_over_shell_ = cfg.object.mass_kg / mech.shell_moving_mass_kg;
+}
+
+void ShellDamping::Update(const std::vector<double>& stuck) {
+  if (!active()) return;
+  int touching = 0;
+  for (double s : stuck) touching += s > 0.0 ? 1 : 0;
+  for (size_t k = 0; k < stuck.size(); ++k) {
+    const double share = touching > 0 ? stuck[k] / touching : 0.0;
+    const double c = c_shell_ * Factor(share * object_over_shell_);
+    model_->SetDofDamping(dofs_[2 * k], c);
+    model_->SetDofDamping(dofs_[2 * k + 1], c);
+  }
+}
+
+}  // namespace tactip

@@ -1,0 +1,173 @@
+// skin.shell_damping = gel: the shell skin's in-plane damper follows the mass it carries, so
+// the held object's mode and the released shell's mode both have the configured damping
+// ratio (a gel with a constant loss tangent), where a fixed damper leaves the held object
+// ringing.
+
+#include "scenarios/rail/shell_damping.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "models/skin.h"
+#include "scenarios/rail.h"
+#include "scenarios/rail/rail_run.h"
+
+namespace tactip {
+namespace {
+
+RailScenarioConfig Gel(double ratio) {
+  RailScenarioConfig c;
+  c.skin.shell_damping = "gel";
+  c.skin.shear_damping_ratio = ratio;
+  return c;
+}
+
+// Damping ratio of the shell's in-plane mode carrying `mass_kg` with damper `c`.
+double Ratio(const RailScenarioConfig& cfg, int n_pins, double c, double mass_kg) {
+  const SkinMechanics mech = SkinMechanics::From(cfg.skin, static_cast<size_t>(n_pins));
+  const double k = n_pins * mech.k_shear_N_m;
+  return c / (2.0 * std::sqrt(k * mass_kg));
+}
+
+TEST(ShellDampingTest, EveryModeOfTheGelShellHasTheConfiguredRatioWhateverItCarries) {
+  const RailScenarioConfig cfg = Gel(0.1);
+  const RailSceneIds ids(cfg, SceneOptions{});
+  CompiledModel model = ids.model->Copy();
+  const int n = ids.scene.n_pins;
+  ShellDamping damping(cfg, model, n);
+  ASSERT_TRUE(damping.active());
+  const int dof_y = model.JointDofAdr(model.JointId("tactip/skin_shear_y"));
+  const int dof_z = model.JointDofAdr(model.JointId("tactip/skin_shear_z"));
+  const double shell = SkinMechanics::From(cfg.skin, static_cast<size_t>(n)).shell_moving_mass_kg;
+  const double object = cfg.object.mass_kg;
+
+  damping.Update({1.0});  // every contact sticks: the shell carries the whole object
+  EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(dof_y), shell + object), 0.1, 1e-9);
+  EXPECT_EQ(model.DofDamping(dof_z), model.DofDamping(dof_y));
+  damping.Update({0.5});  // half the contacting pins stick: half the object
+  EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(dof_y), shell + 0.5 * object), 0.1, 1e-9);
+  damping.Update({0.0});  // sliding or no contact: the shell alone
+  EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(dof_y), shell), 0.1, 1e-9);
+  EXPECT_NEAR(Ratio(cfg, n, ids.model->DofDamping(dof_y), shell), 0.1, 1e-9);  // the compiled damper
+}
+
+TEST(ShellDampingTest, TwoSensorsInContactShareTheObject) {
+  RailScenarioConfig cfg = Gel(0.1);
+  cfg.sensors = {SensorMountConfig{"left", -25.0}, SensorMountConfig{"right", 25.0}};
+  const RailSceneIds ids(cfg, SceneOptions{});
+  CompiledModel model = ids.model->Copy();
+  const int n = ids.scene.n_pins;
+  ShellDamping damping(cfg, model, n);
+  const int left = model.JointDofAdr(model.JointId("left/skin_shear_y"));
+  const int right = model.JointDofAdr(model.JointId("right/skin_shear_y"));
+  const double shell = SkinMechanics::From(cfg.skin, static_cast<size_t>(n)).shell_moving_mass_kg;
+  const double object = cfg.object.mass_kg;
+
+  damping.Update({1.0, 1.0});
+  EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(left), shell + 0.5 * object), 0.1, 1e-9);
+  EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(right), shell + 0.5 * object), 0.1, 1e-9);
+  damping.Update({1.0, 0.0});  // only the left one touches
+  EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(left), shell + object), 0.1, 1e-9);
+  EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(right), shell), 0.1, 1e-9);
+}
+
+TEST(ShellDampingTest, AViscousShellOrAMembraneSkinKeepsItsFixedDamper) {
+  RailScenarioConfig viscous = Gel(0.1);
+  viscous.skin.shell_damping = "viscous";
+  const RailSceneIds ids(viscous, SceneOptions{});
+  CompiledModel model = ids.model->Copy();
+  ShellDamping damping(viscous, model, ids.scene.n_pins);
+  EXPECT_FALSE(damping.active());
+  const int dof = model.JointDofAdr(model.JointId("tactip/skin_shear_y"));
+  const double before = model.DofDamping(dof);
+  damping.Update({1.0});
+  EXPECT_EQ(model.DofDamping(dof), before);
+
+  RailScenarioConfig membrane = Gel(0.1);
+  membrane.skin.coupling = "membrane";
+  try {
+    membrane.skin.ValidateRules();
+    FAIL() << "gel damping on a membrane skin was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "skin.shell_damping = 'gel': gel damps the shell skin's in-plane mode: needs skin.coupling = shell");
+  }
+}
+
+// Noise-free rail runs; `lift_mm` 50 lifts the plate's edge above the contact, so that the
+// object slides off it after the onset (20: it lands on its end stop still touching).
+RailScenarioConfig Quiet(RailScenarioConfig c, const char* stimulus, double mass_kg, double depth_mm,
+                         double speed_mm_s, double lift_mm = 20.0) {
+  c.rail.stimulus = stimulus;
+  c.object.mass_kg = mass_kg;
+  c.rail.press_depth_mm = depth_mm;
+  c.rail.lift_mm = lift_mm;
+  c.rail.retract_speed_mm_s = speed_mm_s;
+  c.sensor.pixel_noise_px = 0.0;
+  c.sensor.dropout_prob = 0.0;
+  return c;
+}
+
+TEST(ShellDampingTest, AHeavyHeldObjectRingsOnALightFixedDamperButNotOnTheGel) {
+  // The shell's ratio 0.1 with 0.4 kg held: a fixed damper gives the held mode 0.025.
+  RailScenarioConfig viscous = Gel(0.1);
+  viscous.skin.shell_damping = "viscous";
+  RunRecord rec;
+  const RailRunSummary rings = RailScenario(Quiet(viscous, "curved80", 0.4, 4.5, 0.2)).Run(0, 3, rec);
+  EXPECT_FALSE(rings.health.ok);
+  EXPECT_GT(rings.health.pin_speed_px, 1.0);  // px/frame beyond the sensor's motion while held
+  const RailRunSummary gel = RailScenario(Quiet(Gel(0.1), "curved80", 0.4, 4.5, 0.2)).Run(0, 3, rec);
+  EXPECT_TRUE(gel.health.ok) << gel.health.reason;
+  EXPECT_LT(gel.health.pin_speed_px, 0.1);
+}
+
+// Frames in a row, from the frame after the onset's (whose motion spans the onset), whose mean
+// pin speed exceeds `level_px`; and the frames from there to the first with no pin in contact.
+struct Spike {
+  int above = 0, to_contact_loss = 0;
+};
+Spike SpikeOf(const RunRecord& rec, double onset_s, double level_px) {
+  const SensorRecord& s = rec.sensors[0];
+  const size_t n = static_cast<size_t>(s.n_pins);
+  const size_t first =
+      static_cast<size_t>(std::lower_bound(rec.time.begin(), rec.time.end(), onset_s) - rec.time.begin()) + 1;
+  Spike spike;
+  bool running = true;
+  for (size_t f = first; f < rec.frames(); ++f) {
+    double sum = 0.0;
+    size_t touching = 0;
+    for (size_t i = 0; i < n; ++i) {
+      sum += std::hypot(s.pos_px[2 * (f * n + i)] - s.pos_px[2 * ((f - 1) * n + i)],
+                        s.pos_px[2 * (f * n + i) + 1] - s.pos_px[2 * ((f - 1) * n + i) + 1]);
+      touching += s.pin_contact[f * n + i];
+    }
+    running = running && sum / static_cast<double>(n) > level_px;
+    if (running) ++spike.above;
+    if (touching == 0) {
+      spike.to_contact_loss = static_cast<int>(f - first);
+      break;
+    }
+  }
+  return spike;
+}
+
+TEST(ShellDampingTest, ReleasedGelShellKeepsThePinsMovingUntilContactIsLost) {
+  // 0.57 px/frame: the level the default camera noise puts on the mean pin speed (README).
+  constexpr double kNoiseLevelPx = 0.57;
+  RunRecord viscous_rec, gel_rec;
+  const RailRunSummary viscous = RailScenario(Quiet(RailScenarioConfig{}, "flat", 0.1, 3.0, 1.0, 50.0)).Run(0, 3, viscous_rec);
+  const RailRunSummary gel = RailScenario(Quiet(Gel(0.05), "flat", 0.1, 3.0, 1.0, 50.0)).Run(0, 3, gel_rec);
+  ASSERT_TRUE(viscous.health.ok && gel.health.ok) << viscous.health.reason << gel.health.reason;
+  const Spike overdamped = SpikeOf(viscous_rec, viscous.gross_slip_onset_s, kNoiseLevelPx);
+  const Spike ringing = SpikeOf(gel_rec, gel.gross_slip_onset_s, kNoiseLevelPx);
+  ASSERT_GT(ringing.to_contact_loss, 8);
+  EXPECT_GE(ringing.above, ringing.to_contact_loss - 2);
+  EXPECT_LT(overdamped.above, overdamped.to_contact_loss / 2);
+}
+
+}  // namespace
+}  // namespace tactip
