@@ -15,8 +15,8 @@ namespace tactip {
 /// So the damper follows the carried mass M_shell + share * m_object:
 /// c = c_shell * sqrt(1 + share * m_object / M_shell), where c_shell gives the shell alone
 /// skin.shear_damping_ratio and share is the object's share held by this sensor's stuck
-/// contacts (its stuck fraction of contacting pins, split evenly between the sensors in
-/// contact). Does nothing under skin.shell_damping = viscous.
+/// contacts (its stuck fraction of contacting pins, divided by the number of sensors with
+/// stuck contacts). Does nothing under skin.shell_damping = viscous.
 class ShellDamping {
  public:
   ShellDamping() = default;  ///< inactive

@@ -55,7 +55,7 @@ TEST(ShellDampingTest, EveryModeOfTheGelShellHasTheConfiguredRatioWhateverItCarr
   EXPECT_NEAR(Ratio(cfg, n, ids.model->DofDamping(dof_y), shell), 0.1, 1e-9);  // the compiled damper
 }
 
-TEST(ShellDampingTest, TwoSensorsInContactShareTheObject) {
+TEST(ShellDampingTest, TwoSensorsWithStuckContactsShareTheObject) {
   RailScenarioConfig cfg = Gel(0.1);
   cfg.sensors = {SensorMountConfig{"left", -25.0}, SensorMountConfig{"right", 25.0}};
   const RailSceneIds ids(cfg, SceneOptions{});
@@ -70,7 +70,7 @@ TEST(ShellDampingTest, TwoSensorsInContactShareTheObject) {
   damping.Update({1.0, 1.0});
   EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(left), shell + 0.5 * object), 0.1, 1e-9);
   EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(right), shell + 0.5 * object), 0.1, 1e-9);
-  damping.Update({1.0, 0.0});  // only the left one touches
+  damping.Update({1.0, 0.0});  // only the left one sticks
   EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(left), shell + object), 0.1, 1e-9);
   EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(right), shell), 0.1, 1e-9);
 }
