@@ -13,11 +13,11 @@
 
 #include "models/rail_rig.h"
 #include "scenarios/rail/rail_config.h"
-#include "scenarios/rail/shell_damping.h"
 #include "scenarios/rail/rail_controller.h"
 #include "scenarios/rail/rail_scenario.h"
 #include "scenarios/rail/rail_schedule.h"
 #include "scenarios/rail/run_health.h"
+#include "scenarios/rail/shell_damping.h"
 #include "scenarios/rail/state_limits.h"
 #include "sensors/camera.h"
 #include "sensors/dataset.h"

@@ -11,9 +11,7 @@ ShellDamping::ShellDamping(const RailScenarioConfig& cfg, CompiledModel& model, 
   model_ = &model;
   for (const SensorMountConfig& mount : cfg.sensors) {
     const SkinNames names{mount.Prefix()};
-    for (const char* axis : {"skin_shear_y", "skin_shear_z"}) {
-      dofs_.push_back(model.JointDofAdr(model.JointId(names.Part(axis))));
-    }
+    dofs_.push_back(model.JointDofAdr(model.JointId(names.Part("skin_shear_z"))));
   }
   c_shell_ = model.DofDamping(dofs_.front());
   const SkinMechanics mech = SkinMechanics::From(cfg.skin, static_cast<size_t>(n_pins));
@@ -26,9 +24,7 @@ void ShellDamping::Update(const std::vector<double>& stuck) {
   for (double s : stuck) touching += s > 0.0 ? 1 : 0;
   for (size_t k = 0; k < stuck.size(); ++k) {
     const double share = touching > 0 ? stuck[k] / touching : 0.0;
-    const double c = c_shell_ * Factor(share * object_over_shell_);
-    model_->SetDofDamping(dofs_[2 * k], c);
-    model_->SetDofDamping(dofs_[2 * k + 1], c);
+    model_->SetDofDamping(dofs_[k], c_shell_ * Factor(share * object_over_shell_));
   }
 }
 
