@@ -83,7 +83,8 @@ void SkinConfig::ValidateRules() const {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
   }
   if (shell_damping == "gel" && coupling != "shell") {
-    FailRule("skin.shell_damping", shell_damping, "gel damps the shell skin's in-plane mode: needs skin.coupling = shell");
+    FailRule("skin.shell_damping", shell_damping,
+             "gel damps the shell skin's in-plane mode: needs skin.coupling = shell");
   }
 }
 

@@ -82,8 +82,9 @@ struct SkinConfig {
       "How the shell skin's in-plane damper is set (coupling shell). viscous: a fixed damper giving the shell "
       "alone shear_damping_ratio. gel: a gel with a constant loss tangent (2 x shear_damping_ratio), so every "
       "mode the shell forms has about that damping ratio: the damper along the rail follows the mass the shell "
-      "carries - its own, plus the held object's share while its contacts stick (rail and incipient scenarios). With a silicone "
-      "gel's ratio, e.g. 0.08, released shear rings until contact is lost (README 'Slip signatures').",
+      "carries - its own, plus the held object's share while its contacts stick (rail and incipient "
+      "scenarios). With a silicone gel's ratio, e.g. 0.08, released shear rings until contact is lost (README "
+      "'Slip signatures').",
       Choices{"viscous", "gel"});
     v("contact_radius_mm", contact_radius_mm, "mm",
       "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",

@@ -1,7 +1,5 @@
 #include "scenarios/rail/shell_damping.h"
 
-#include <cmath>
-
 #include "models/skin.h"
 
 namespace tactip {
