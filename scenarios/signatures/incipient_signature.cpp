@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -37,19 +38,44 @@ double SlippingSpeedPx(const SensorRecord& sensor, size_t f, int w, double* bulk
   return slip_count > 0 ? slip_sum / slip_count : kNaN;
 }
 
-// First frame time in [first, end) starting params.window consecutive frames on which the
-// slipping pins' speed exceeds the bulk's by params.speed_thr_px; NaN if none.
-double FirstVisibleS(const RunRecord& run, const SensorRecord& sensor, size_t first, size_t end,
-                     const IncipientParams& params) {
-  int streak = 0;
+// Per frame f in [first, end): the slipping pins' smoothed speed (window params.window)
+// minus the bulk's; NaN where no pin is labelled slipping.
+std::vector<double> ExcessSpeedsPx(const SensorRecord& sensor, size_t first, size_t end, const IncipientParams& params) {
+  std::vector<double> excess;
   for (size_t f = first; f < end; ++f) {
     double bulk = kNaN;
     const double slipping = SlippingSpeedPx(sensor, f, params.window, &bulk);
-    const bool visible = slipping - (std::isnan(bulk) ? 0.0 : bulk) > params.speed_thr_px;
-    streak = visible ? streak + 1 : 0;
-    if (streak == params.window) return run.time[f + 1 - static_cast<size_t>(params.window)];
+    excess.push_back(slipping - (std::isnan(bulk) ? 0.0 : bulk));
+  }
+  return excess;
+}
+
+// First frame time starting params.window consecutive frames whose excess passes
+// params.speed_thr_px (excess[k] is frame first + k); NaN if none.
+double FirstVisibleS(const RunRecord& run, const std::vector<double>& excess, size_t first,
+                     const IncipientParams& params) {
+  int streak = 0;
+  for (size_t k = 0; k < excess.size(); ++k) {
+    streak = excess[k] > params.speed_thr_px ? streak + 1 : 0;  // NaN compares false
+    if (streak == params.window) return run.time[first + k + 1 - static_cast<size_t>(params.window)];
   }
   return kNaN;
+}
+
+// The largest excess held for params.window consecutive frames: the largest, over every
+// window of that many frames with slipping pins throughout, of the window's smallest
+// excess. The run is visible exactly when this passes params.speed_thr_px. NaN if no
+// such window.
+double SustainedExcessPx(const std::vector<double>& excess, const IncipientParams& params) {
+  const auto w = static_cast<size_t>(params.window);
+  double best = kNaN;
+  for (size_t k = 0; k + w <= excess.size(); ++k) {
+    const auto begin = excess.begin() + static_cast<std::ptrdiff_t>(k);
+    if (std::any_of(begin, begin + static_cast<std::ptrdiff_t>(w), [](double e) { return std::isnan(e); })) continue;
+    const double low = *std::min_element(begin, begin + static_cast<std::ptrdiff_t>(w));
+    best = std::isnan(best) ? low : std::max(best, low);
+  }
+  return best;
 }
 
 // Peak over [first, end) of the slipping pins' mean speed with window w; NaN if none slipped.
@@ -83,8 +109,10 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   s.has_phase = !std::isnan(onset_s);
   s.has_external = !sensor.external_m.empty();
   // Camera visibility and the detector, both measured against the fall.
-  s.visible_s = FirstVisibleS(run, sensor, first, end, params);
+  const std::vector<double> excess = ExcessSpeedsPx(sensor, first, end, params);
+  s.visible_s = FirstVisibleS(run, excess, first, params);
   s.visible_lead_s = fall_s - s.visible_s;
+  s.sustained_excess_px = SustainedExcessPx(excess, params);
   s.alarm_s = FirstIncipientAlarmS(run, sensor, params, retract);
   s.alarm_lead_s = fall_s - s.alarm_s;
   // Amplitudes of the slipping pins, where they slip, and the marker agreement.

@@ -23,6 +23,10 @@ struct IncipientSignature {
   /// the other pins (the bulk) by params.speed_thr_px.
   double visible_s = 0.0;
   double visible_lead_s = 0.0;  ///< object_fall_s - visible_s
+  /// How far the run is from (or past) visibility: the largest excess of the slipping pins'
+  /// smoothed speed over the bulk's that lasts params.window consecutive frames, px/frame
+  /// (visible exactly when it passes params.speed_thr_px); NaN if no pin slips that long.
+  double sustained_excess_px = 0.0;
   /// Peak over the window of the labelled-slipping pins' mean speed, unsmoothed (W = 1)
   /// and with a 5-frame moving average (W = 5); NaN without a phase.
   double amplitude_w1_px = 0.0;

@@ -102,7 +102,7 @@ std::string GrossSection(const std::vector<SignatureRun>& runs, const Acceptance
 
 // The incipient-slip figures of the runs that have them, one vector per figure.
 struct IncipientColumns {
-  std::vector<double> visible_lead, amplitude_w1, amplitude_w5, alarm_lead, correlation;
+  std::vector<double> visible_lead, excess, amplitude_w1, amplitude_w5, alarm_lead, correlation;
 };
 
 // One row of the incipient table; fills the columns. Without an incipient phase the
@@ -112,15 +112,17 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   const IncipientSignature& s = *r.incipient;
   auto phase = [&](double v) { return s.has_phase ? Num(v) : std::string(kNotApplicable); };
   c.visible_lead.push_back(s.visible_lead_s);
+  if (!std::isnan(s.sustained_excess_px)) c.excess.push_back(s.sustained_excess_px);
   c.alarm_lead.push_back(s.alarm_lead_s);
   if (s.has_phase) c.amplitude_w1.push_back(s.amplitude_w1_px);
   if (s.has_phase) c.amplitude_w5.push_back(s.amplitude_w5_px);
   if (s.has_external) c.correlation.push_back(s.tracking_correlation);
   const std::string first = s.sectors.first.empty() ? kNone : s.sectors.first;
   const std::string order = s.sectors.order.empty() ? kNone : s.sectors.order;
-  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>9} {:>8} {:>5} {:>5} {:>9} {:>6}\n", r.run,
+  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>5} {:>9} {:>6}\n", r.run,
                      Num(r.speed_mm_s), Num(s.visible_s, "{:.3f}"), Num(s.visible_lead_s, "{:.3f}"),
-                     PassCell(s.visible_lead_s >= kAcceptedLeadS), phase(s.amplitude_w1_px),
+                     PassCell(s.visible_lead_s >= kAcceptedLeadS), Num(s.sustained_excess_px),
+                     phase(s.amplitude_w1_px),
                      phase(s.amplitude_w5_px), Num(s.alarm_s, "{:.3f}"), Num(s.alarm_lead_s, "{:.3f}"),
                      PassCell(s.alarm_lead_s >= kAcceptedLeadS), s.has_phase ? first : kNotApplicable,
                      s.has_phase ? order : kNotApplicable,
@@ -140,8 +142,9 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
       "incipient slip: {} of {} runs apply (fingerprint skin, fall or incipient onset); incipient onset in {}; "
       "detector W {}, s_thr {} px, I_thr {}\n",
       a.visible_lead.runs, runs.size(), onsets, params.window, params.speed_thr_px, params.count_thr);
-  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>9} {:>8} {:>5} {:>5} {:>9} {:>6}\n", "run",
-                     "speed", "visible_s", "vis_lead", ">=0.5", "amp_w1", "amp_w5", "alarm_s", "alarm_ld", ">=0.5",
+  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>5} {:>9} {:>6}\n", "run",
+                     "speed", "visible_s", "vis_lead", ">=0.5", "excess", "amp_w1", "amp_w5", "alarm_s", "alarm_ld",
+                     ">=0.5",
                      "first", "order", "corr");
   IncipientColumns c;
   for (const SignatureRun& r : runs) out += IncipientRow(r, c);
@@ -149,6 +152,8 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
   out += SummaryLine("figure", "simulated: median [min, max]", "hardware", "acceptance");
   out += SummaryLine("visible before the fall, s", Spread(c.visible_lead, "{:.3f}"), ">= 0.5, often seconds",
                      ">= 0.5 s in >= 90 % of runs: " + Verdict(a.visible_lead));
+  out += SummaryLine("sustained excess, px/frame", Spread(c.excess),
+                     fmt::format("> {} (s_thr) for {} frames", params.speed_thr_px, params.window));
   out += SummaryLine("amplitude W1, px/frame", Spread(c.amplitude_w1), "~1.0 (noise ~0.5)");
   out += SummaryLine("amplitude W5, px/frame", Spread(c.amplitude_w5), "~0.4 (noise ~0.1)");
   out += SummaryLine("detector alarm before fall, s", Spread(c.alarm_lead, "{:.3f}"), "stopped in time in 17 of 20",

@@ -212,6 +212,8 @@ TEST(IncipientSignatureTest, SlipBecomesVisibleOnceTheSmoothedExcessSpeedPassesT
   EXPECT_NEAR(s->visible_lead_s, 84 * kFrameS, kTimeTol);
   EXPECT_NEAR(s->amplitude_w1_px, 0.6, kSpeedTol);
   EXPECT_NEAR(s->amplitude_w5_px, 0.6, kSpeedTol);
+  // Held for 5 frames: the steady 0.6 px/frame over a still bulk.
+  EXPECT_NEAR(s->sustained_excess_px, 0.6, kSpeedTol);
   // The detector's bulk includes the slipping pins until they join the set: excess 0.192
   // at frame 61, 0.288 at frame 62, when its four pins meet I_thr = 4.
   EXPECT_NEAR(s->alarm_s, 62 * kFrameS, kTimeTol);
@@ -233,6 +235,33 @@ TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
   EXPECT_TRUE(std::isnan(s->visible_s));
   EXPECT_TRUE(std::isnan(s->visible_lead_s));
   EXPECT_TRUE(std::isnan(s->alarm_s));
+  // How far from visible: 0.1 px/frame held, half the threshold.
+  EXPECT_NEAR(s->sustained_excess_px, 0.1, kSpeedTol);
+}
+
+TEST(IncipientSignatureTest, SustainedExcessIsTheBestValueHeldForTheWholeWindow) {
+  RunRecord r = StillRun(160, 20, "fingerprint-v2");
+  r.attrs["incipient_onset_s"] = 60 * kFrameS;
+  r.attrs["object_fall_s"] = 145 * kFrameS;
+  // Pin 0 slips from frame 60 and jumps 2 px/frame on frames 70-72 only: its W5 speed is
+  // 0.4, 0.8, 1.2, 1.2, 1.2, 0.8, 0.4 on frames 70-76, so the best 5-frame floor is 0.8.
+  for (int f = 60; f < 160; ++f) r.sensors[0].pin_slip[f * 20] = 1;
+  MovePin(r.sensors[0], 0, 70, 73, 2.0, 0.0);
+  auto s = MeasureIncipientSignature(r, r.sensors[0]);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->amplitude_w5_px, 1.2, kSpeedTol);
+  EXPECT_NEAR(s->sustained_excess_px, 0.8, kSpeedTol);
+  EXPECT_NEAR(s->visible_s, 70 * kFrameS, kTimeTol);
+  // Slipping on fewer consecutive frames than the window: no window to judge.
+  RunRecord brief = StillRun(160, 20, "fingerprint-v2");
+  brief.attrs["incipient_onset_s"] = 60 * kFrameS;
+  brief.attrs["object_fall_s"] = 145 * kFrameS;
+  for (int f = 70; f < 74; ++f) brief.sensors[0].pin_slip[f * 20] = 1;
+  MovePin(brief.sensors[0], 0, 70, 73, 2.0, 0.0);
+  s = MeasureIncipientSignature(brief, brief.sensors[0]);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_TRUE(std::isnan(s->sustained_excess_px));
+  EXPECT_TRUE(std::isnan(s->visible_s));
 }
 
 TEST(IncipientSignatureTest, SmoothSkinAndRunsWithoutFallOrOnsetHaveNoIncipientSignature) {
@@ -307,7 +336,8 @@ TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
   const std::string gross_row = csv.substr(csv.find('\n') + 1, csv.find('\n', csv.find('\n') + 1) - csv.find('\n'));
   EXPECT_EQ(gross_row.substr(0, 15), "0,none,smooth,0") << csv;
   EXPECT_NE(gross_row.find(",17,1,"), std::string::npos) << csv;
-  EXPECT_NE(gross_row.find(",n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n"), std::string::npos) << csv;
+  EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px\n"), std::string::npos) << csv;
 }
 
 TEST(SignatureReportTest, DatasetWithoutOnsetsSaysSoForBothSections) {
