@@ -155,6 +155,7 @@ struct ContactConfig {
   double pin_friction_spread = 0.0; ///< per-pin relative perturbation of the friction (uniform +-)
   double weakening_speed_mm_s = 0.0;///< velocity-weakening scale v_c (0 = switch at the slip tolerance)
   double breakaway_ratio = 1.0;     ///< coefficient right after breakaway / static (weakening from there)
+  double slip_memory_um = 0.0;      ///< slip distance over which a pin's friction follows its speed (0 = at once)
   double timeconst_s = 0.004;       ///< contact softness time constant
   double impedance = 0.99;          ///< contact impedance d (solimp dmax), closer to 1 = harder
   double impedance_min = 0.5;       ///< impedance at zero penetration (solimp dmin)
@@ -189,6 +190,13 @@ struct ContactConfig {
       "from the static value. 1 = no sudden drop (the weakening is continuous from rest). Between "
       "kinetic_ratio and 1.",
       Bounds::LeftOpen(0.0, 1.0));
+    v("slip_memory_um", slip_memory_um, "um",
+      "With velocity weakening: a pin's coefficient follows the weakened value of its slip speed over this slip "
+      "distance D_c instead of at once, mu <- mu_v + (mu - mu_v) exp(-v dt / D_c) each step (the slip law of "
+      "rate-and-state friction): a contact must slide D_c to lose its friction, which removes the law's "
+      "instantaneous negative damping. A pin that leaves contact starts again from the static value; a stuck "
+      "pin keeps its coefficient (no healing). 0 = memoryless.",
+      Bounds::Closed(0.0, 1000.0));
     v("timeconst_s", timeconst_s, "s",
       "MuJoCo contact time constant (solref). Must be >= 2 timesteps; with impedance 0.99 the contact "
       "is ~30x stiffer than a pin's gel spring, so the gel, not the solver, sets the indentation.",

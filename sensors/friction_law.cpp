@@ -1,13 +1,15 @@
 #include "sensors/friction_law.h"
 
+#include <cmath>
+
 #include "sim/base/random.h"
 
 namespace tactip {
 
 FrictionLaw::FrictionLaw(const ContactConfig& contact, const LabelConfig& labels, double mu,
                          const std::vector<int>& pin_geom, int stimulus_geom, std::uint64_t seed,
-                         CompiledModel& model)
-    : contact_(contact), slip_speed_m_s_(labels.slip_speed_m_s), pin_geom_(pin_geom) {
+                         CompiledModel& model, double timestep_s)
+    : contact_(contact), slip_speed_m_s_(labels.slip_speed_m_s), timestep_s_(timestep_s), pin_geom_(pin_geom) {
   // Static coefficients with their per-pin spread; the stimulus at the lowest kinetic value.
   const size_t n = pin_geom.size();
   const double mu_k = mu * contact.kinetic_ratio;
@@ -32,9 +34,15 @@ void FrictionLaw::Update(const std::vector<PinContactSample>& samples, const std
     const bool now = pin_slip[i] || (sliding_[i] && samples[i].in_contact &&
                                      samples[i].slip_speed_m_s > slip_speed_m_s_);
     if (weakening) {
-      // Velocity weakening from this step's slip speed (from the breakaway value once sliding).
+      // Velocity weakening from this step's slip speed (from the breakaway value once sliding),
+      // at once or, with a slip memory, over the slip distance D_c; a pin out of contact
+      // starts afresh.
       sliding_[i] = now ? 1 : 0;
-      mu_cur_[i] = contact_.WeakenedFriction(mu_pin_[i], samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0, now);
+      const double v = samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0;
+      const double target = contact_.WeakenedFriction(mu_pin_[i], v, now);
+      const double memory_m = contact_.slip_memory_um * 1e-6;
+      const bool remembers = memory_m > 0.0 && samples[i].in_contact;
+      mu_cur_[i] = remembers ? target + (mu_cur_[i] - target) * std::exp(-v * timestep_s_ / memory_m) : target;
     } else {
       // Static -> kinetic when a pin slides, back when it sticks.
       if (now == static_cast<bool>(sliding_[i])) continue;

@@ -3,7 +3,8 @@
 // (the run's coefficient with a per-pin spread), dropping to kinetic while a pin slides
 // (switched at the slip tolerance, or weakened continuously with the slip speed). MuJoCo
 // takes the larger of two geoms' coefficients, so the stimulus carries the lowest kinetic
-// value of any pin and each pin's own geom carries the coefficient in force.
+// value of any pin and each pin's own geom carries the coefficient in force. With a slip
+// memory the weakened coefficient is approached over a slip distance, not at once.
 
 #include <cstdint>
 #include <vector>
@@ -19,9 +20,10 @@ class FrictionLaw {
  public:
   /// Draws each pin's static coefficient around `mu` (relative spread
   /// contact.pin_friction_spread, from `seed`) and sets the geoms of `model`: the pins'
-  /// (`pin_geom`, -1 = no geom) and the stimulus's (`stimulus_geom`).
+  /// (`pin_geom`, -1 = no geom) and the stimulus's (`stimulus_geom`). `timestep_s`: the
+  /// time between Update calls (every physics step), for contact.slip_memory_um.
   FrictionLaw(const ContactConfig& contact, const LabelConfig& labels, double mu, const std::vector<int>& pin_geom,
-              int stimulus_geom, std::uint64_t seed, CompiledModel& model);
+              int stimulus_geom, std::uint64_t seed, CompiledModel& model, double timestep_s);
 
   /// True when a pin's coefficient changes as it slides (kinetic_ratio < 1): Update must then
   /// see the contacts at every step.
@@ -35,6 +37,7 @@ class FrictionLaw {
  private:
   const ContactConfig contact_;
   const double slip_speed_m_s_;
+  const double timestep_s_;
   const std::vector<int> pin_geom_;
   std::vector<double> mu_pin_;          // per pin: static coefficient
   std::vector<double> mu_cur_;          // per pin: coefficient in force

@@ -115,7 +115,7 @@ void RailRun::AddChannels(const RailScenarioConfig& cfg, const Draws& d) {
     const TactileSensorIds& ids = im_.sensors[k];
     channels_.push_back(Channel{
         TactileSensor(im_.sensor_specs[k], ids, DeriveSeed(base, 1), DeriveSeed(base, 2)),
-        FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_),
+        FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_, dt_),
         std::vector<std::uint8_t>(n_, 0), {}, std::nullopt});
     // Rendered images only when asked for (their pixel noise on stream 4).
     if (cfg.images.enabled) channels_.back().imaging.emplace(cfg.images, cfg.sensor, DeriveSeed(base, 4));
