@@ -22,10 +22,13 @@ TimestepChoice RailProtocolScenario::ChooseStep(RailScenarioConfig& cfg) const {
 }
 
 RailScenarioConfig IncipientDefaults() {
-  // The acrylic contact: per-pin friction variation and velocity weakening (README,
-  // "Contacts and friction"), which let partial slip spread before the grip fails.
-  std::vector<std::string> keys = {"rail.stimulus=acrylic", "external.enabled=true", "rail.retract_speed_mm_s=0.3",
-                                   "contact.pin_friction_spread=0.2", "contact.weakening_speed_mm_s=1", "rail.lift_speed_mm_s=5"};
+  // The acrylic contact: per-pin friction variation and velocity weakening with a slip
+  // memory (README, "Contacts and friction"), which let partial slip spread before the
+  // grip fails.
+  std::vector<std::string> keys = {"rail.stimulus=acrylic",           "external.enabled=true",
+                                   "rail.retract_speed_mm_s=0.3",     "contact.pin_friction_spread=0.2",
+                                   "contact.weakening_speed_mm_s=1",  "contact.slip_memory_um=10",
+                                   "rail.lift_speed_mm_s=5"};
   for (const auto& k : SkinPresetOverrides("fingerprint-v2")) keys.push_back(k);
   return LoadConfig<RailScenarioConfig>("", keys);
 }
