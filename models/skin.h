@@ -194,8 +194,9 @@ struct ContactConfig {
       "With velocity weakening: a pin's coefficient follows the weakened value of its slip speed over this slip "
       "distance D_c instead of at once, mu <- mu_v + (mu - mu_v) exp(-v dt / D_c) each step (the slip law of "
       "rate-and-state friction): a contact must slide D_c to lose its friction, which removes the law's "
-      "instantaneous negative damping. A pin that leaves contact starts again from the static value; a stuck "
-      "pin keeps its coefficient (no healing). 0 = memoryless.",
+      "instantaneous negative damping; a breakaway drop is spread over D_c too. A pin that leaves contact starts "
+      "again from the static value; one that sticks again regains its friction only as it creeps (over D_c of "
+      "creep), not with time. 0 = memoryless.",
       Bounds::Closed(0.0, 1000.0));
     v("timeconst_s", timeconst_s, "s",
       "MuJoCo contact time constant (solref). Must be >= 2 timesteps; with impedance 0.99 the contact "

@@ -338,6 +338,9 @@ TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
   EXPECT_NE(gross_row.find(",17,1,"), std::string::npos) << csv;
   EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px\n"), std::string::npos) << csv;
+  // The incipient run's excess: its four pins' steady 0.6 px/frame, last column and summary.
+  EXPECT_NE(csv.find(",E,E,n/a,0.6\n"), std::string::npos) << csv;
+  EXPECT_NE(text.find("sustained excess, px/frame      0.60 [0.60, 0.60] (1 of 1 runs)"), std::string::npos) << text;
 }
 
 TEST(SignatureReportTest, DatasetWithoutOnsetsSaysSoForBothSections) {
