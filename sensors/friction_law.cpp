@@ -27,6 +27,7 @@ FrictionLaw::FrictionLaw(const ContactConfig& contact, const LabelConfig& labels
 void FrictionLaw::Update(const std::vector<PinContactSample>& samples, const std::vector<std::uint8_t>& pin_slip,
                          CompiledModel& model) {
   const bool weakening = contact_.weakening_speed_mm_s > 0.0;
+  const double memory_m = contact_.slip_memory_um * 1e-6;
   for (size_t i = 0; i < pin_geom_.size(); ++i) {
     if (pin_geom_[i] < 0) continue;
     // A pin slides from the step it is labelled slipping until it sticks again (or leaves
@@ -40,7 +41,6 @@ void FrictionLaw::Update(const std::vector<PinContactSample>& samples, const std
       sliding_[i] = now ? 1 : 0;
       const double v = samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0;
       const double target = contact_.WeakenedFriction(mu_pin_[i], v, now);
-      const double memory_m = contact_.slip_memory_um * 1e-6;
       const bool remembers = memory_m > 0.0 && samples[i].in_contact;
       mu_cur_[i] = remembers ? target + (mu_cur_[i] - target) * std::exp(-v * timestep_s_ / memory_m) : target;
     } else {

@@ -224,11 +224,18 @@ TEST(IncipientSignatureTest, SlipBecomesVisibleOnceTheSmoothedExcessSpeedPassesT
   EXPECT_TRUE(std::isnan(s->tracking_correlation));
 }
 
-TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
+/// A still 20-pin v2 run with its incipient onset at frame 60 and the fall at frame 145,
+/// pin 0 labelled slipping on frames [slip_first, slip_end).
+RunRecord PinZeroSlipsRun(int slip_first, int slip_end) {
   RunRecord r = StillRun(160, 20, "fingerprint-v2");
   r.attrs["incipient_onset_s"] = 60 * kFrameS;
   r.attrs["object_fall_s"] = 145 * kFrameS;
-  for (int f = 60; f < 160; ++f) r.sensors[0].pin_slip[f * 20] = 1;
+  for (int f = slip_first; f < slip_end; ++f) r.sensors[0].pin_slip[f * 20] = 1;
+  return r;
+}
+
+TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
+  RunRecord r = PinZeroSlipsRun(60, 160);
   MovePin(r.sensors[0], 0, 60, 145, 0.1, 0.0);
   const auto s = MeasureIncipientSignature(r, r.sensors[0]);
   ASSERT_TRUE(s.has_value());
@@ -240,12 +247,9 @@ TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
 }
 
 TEST(IncipientSignatureTest, SustainedExcessIsTheBestValueHeldForTheWholeWindow) {
-  RunRecord r = StillRun(160, 20, "fingerprint-v2");
-  r.attrs["incipient_onset_s"] = 60 * kFrameS;
-  r.attrs["object_fall_s"] = 145 * kFrameS;
   // Pin 0 slips from frame 60 and jumps 2 px/frame on frames 70-72 only: its W5 speed is
   // 0.4, 0.8, 1.2, 1.2, 1.2, 0.8, 0.4 on frames 70-76, so the best 5-frame floor is 0.8.
-  for (int f = 60; f < 160; ++f) r.sensors[0].pin_slip[f * 20] = 1;
+  RunRecord r = PinZeroSlipsRun(60, 160);
   MovePin(r.sensors[0], 0, 70, 73, 2.0, 0.0);
   auto s = MeasureIncipientSignature(r, r.sensors[0]);
   ASSERT_TRUE(s.has_value());
@@ -253,10 +257,7 @@ TEST(IncipientSignatureTest, SustainedExcessIsTheBestValueHeldForTheWholeWindow)
   EXPECT_NEAR(s->sustained_excess_px, 0.8, kSpeedTol);
   EXPECT_NEAR(s->visible_s, 70 * kFrameS, kTimeTol);
   // Slipping on fewer consecutive frames than the window: no window to judge.
-  RunRecord brief = StillRun(160, 20, "fingerprint-v2");
-  brief.attrs["incipient_onset_s"] = 60 * kFrameS;
-  brief.attrs["object_fall_s"] = 145 * kFrameS;
-  for (int f = 70; f < 74; ++f) brief.sensors[0].pin_slip[f * 20] = 1;
+  RunRecord brief = PinZeroSlipsRun(70, 74);
   MovePin(brief.sensors[0], 0, 70, 73, 2.0, 0.0);
   s = MeasureIncipientSignature(brief, brief.sensors[0]);
   ASSERT_TRUE(s.has_value());
