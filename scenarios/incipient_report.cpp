@@ -75,7 +75,7 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& 
   m.tracking_error = tracking.error;
 
   // The incipient detector from the retraction on.
-  m.detector_alarm_s = FirstIncipientAlarmS(r, sensor, params, f0);
+  m.detector_alarm_s = FirstIncipientAlarm(r, sensor, params, f0).time_s;
   m.detector_lead_fall_s = m.fall_s - m.detector_alarm_s;
   m.detected_before_fall = !std::isnan(m.detector_alarm_s) && (std::isnan(m.fall_s) || m.detector_alarm_s < m.fall_s);
   m.alarm_before_gross =

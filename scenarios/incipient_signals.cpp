@@ -8,8 +8,8 @@
 
 namespace tactip {
 
-double FirstIncipientAlarmS(const RunRecord& run, const SensorRecord& sensor, const IncipientParams& params,
-                            size_t from_frame) {
+IncipientAlarm FirstIncipientAlarm(const RunRecord& run, const SensorRecord& sensor, const IncipientParams& params,
+                                   size_t from_frame) {
   IncipientDetector det(params);
   const auto n = static_cast<size_t>(sensor.n_pins);
   PinFrame frame;
@@ -23,9 +23,9 @@ double FirstIncipientAlarmS(const RunRecord& run, const SensorRecord& sensor, co
       frame.pos_px(static_cast<Eigen::Index>(i), 1) = sensor.pos_px[(f * n + i) * 2 + 1];
       frame.valid[i] = sensor.valid[f * n + i];
     }
-    if (det.Update(frame).slip) return run.time[f];
+    if (det.Update(frame).slip) return {run.time[f], f, det.slipping_pins()};
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  return {};
 }
 
 MarkerTracking TrackMarkers(const RunRecord& run, const SensorRecord& sensor) {

@@ -4,16 +4,25 @@
 // closely the internal pins track the external markers.
 
 #include <cstddef>
+#include <limits>
+#include <vector>
 
 #include "detectors/incipient.h"
 #include "sensors/dataset.h"
 
 namespace tactip {
 
-/// Time (s) of the first alarm of a fresh IncipientDetector(params) fed sensor's frames
-/// from frame `from_frame` on; NaN when it never alarms. Throws InputError for bad params.
-double FirstIncipientAlarmS(const RunRecord& run, const SensorRecord& sensor, const IncipientParams& params,
-                            size_t from_frame);
+/// The first alarm of the incipient detector in a recorded run.
+struct IncipientAlarm {
+  double time_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN when it never alarms
+  size_t frame = 0;                                          ///< the alarm's frame (0 without one)
+  std::vector<int> pins;  ///< the detector's slipping set at the alarm, ascending (empty without one)
+};
+
+/// The first alarm of a fresh IncipientDetector(params) fed sensor's frames from frame
+/// `from_frame` on. Throws InputError for bad params.
+IncipientAlarm FirstIncipientAlarm(const RunRecord& run, const SensorRecord& sensor, const IncipientParams& params,
+                                   size_t from_frame);
 
 /// Agreement of internal pin and external marker displacements.
 struct MarkerTracking {

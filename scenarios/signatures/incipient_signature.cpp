@@ -88,6 +88,24 @@ double PeakSlippingSpeedPx(const SensorRecord& sensor, size_t first, size_t end,
   return peak;
 }
 
+// The labels, at the alarm's frame, of the pins in the detector's slipping set.
+AlarmPins LabelAlarmPins(const SensorRecord& sensor, const IncipientAlarm& alarm) {
+  AlarmPins pins;
+  if (std::isnan(alarm.time_s)) return pins;
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  for (int i : alarm.pins) {
+    const size_t k = alarm.frame * n + static_cast<size_t>(i);
+    if (!sensor.pin_contact[k]) {
+      ++pins.free;
+    } else if (sensor.pin_slip[k]) {
+      ++pins.slipping;
+    } else {
+      ++pins.stuck;
+    }
+  }
+  return pins;
+}
+
 }  // namespace
 
 std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run, const SensorRecord& sensor,
@@ -113,8 +131,10 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   s.visible_s = FirstVisibleS(run, excess, first, params);
   s.visible_lead_s = fall_s - s.visible_s;
   s.sustained_excess_px = SustainedExcessPx(excess, params);
-  s.alarm_s = FirstIncipientAlarmS(run, sensor, params, retract);
+  const IncipientAlarm alarm = FirstIncipientAlarm(run, sensor, params, retract);
+  s.alarm_s = alarm.time_s;
   s.alarm_lead_s = fall_s - s.alarm_s;
+  s.alarm_pins = LabelAlarmPins(sensor, alarm);
   // Amplitudes of the slipping pins, where they slip, and the marker agreement.
   s.amplitude_w1_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, 1) : kNaN;
   s.amplitude_w5_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, kSmoothingFrames) : kNaN;

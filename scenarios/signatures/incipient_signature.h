@@ -12,6 +12,15 @@
 
 namespace tactip {
 
+/// The pins of the detector's slipping set at its first alarm, by their ground-truth labels
+/// in that frame: does the alarm come from the slipping pins? (All 0 without an alarm.)
+struct AlarmPins {
+  int slipping = 0;  ///< in contact and labelled sliding
+  int stuck = 0;     ///< in contact and sticking
+  int free = 0;      ///< out of contact
+  int total() const { return slipping + stuck + free; }
+};
+
 /// Incipient figures of a fingerprint-skin run with a fall or an incipient onset. The
 /// incipient window runs from the retraction start to the gross-slip onset (the fall
 /// without one). Times in s, speeds in px/frame; NaN = the event did not happen.
@@ -33,6 +42,7 @@ struct IncipientSignature {
   double amplitude_w5_px = 0.0;
   double alarm_s = 0.0;         ///< first alarm of the detector (params) fed from the retraction start
   double alarm_lead_s = 0.0;    ///< object_fall_s - alarm_s
+  AlarmPins alarm_pins;         ///< the labels of the pins that raised that alarm
   SectorOrder sectors;          ///< first-slipping sector and the order, within the window
   double tracking_correlation = 0.0;  ///< internal vs external displacements (TrackMarkers)
 };

@@ -30,17 +30,20 @@ std::string GrossCells(const SignatureRun& r) {
 
 // The incipient columns of a run ("n/a" each where they do not apply).
 std::string IncipientCells(const SignatureRun& r) {
-  if (!r.incipient) return fmt::format("{0},{0},{0},{0},{0},{0},{0},{0},{0},{0},{0},{0}", kNotApplicable);
+  if (!r.incipient) return fmt::format("{0},{0},{0},{0},{0},{0},{0},{0},{0},{0},{0},{0},{0},{0},{0}", kNotApplicable);
   const IncipientSignature& s = *r.incipient;
   auto phase = [&](const std::string& v) { return s.has_phase ? v : std::string(kNotApplicable); };
-  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}", Value(s.visible_s), Value(s.visible_lead_s),
+  const bool alarmed = !std::isnan(s.alarm_s);
+  auto pins = [&](int count) { return alarmed ? std::to_string(count) : std::string("none"); };
+  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", Value(s.visible_s), Value(s.visible_lead_s),
                      s.visible_lead_s >= kAcceptedLeadS ? 1 : 0, phase(Value(s.amplitude_w1_px)),
                      phase(Value(s.amplitude_w5_px)), Value(s.alarm_s), Value(s.alarm_lead_s),
                      s.alarm_lead_s >= kAcceptedLeadS ? 1 : 0,
                      phase(s.sectors.first.empty() ? "none" : s.sectors.first),
                      phase(s.sectors.order.empty() ? "none" : s.sectors.order),
                      s.has_external ? Value(s.tracking_correlation) : kNotApplicable,
-                     Value(s.sustained_excess_px));
+                     Value(s.sustained_excess_px), pins(s.alarm_pins.slipping), pins(s.alarm_pins.stuck),
+                     pins(s.alarm_pins.free));
 }
 
 }  // namespace
@@ -50,7 +53,7 @@ std::string SignatureCsv(const std::vector<SignatureRun>& runs) {
       "run,speed_mm_s,skin,incipient_onset,noise_px,noise_w5_px,noise_level_px,spike_width_frames,spike_width_pass,"
       "spike_peak_px,spike_peak_w5_px,colinear_onset,colinear_later,contact_lost_s,visible_s,visible_lead_s,"
       "visible_pass,amplitude_w1_px,amplitude_w5_px,alarm_s,alarm_lead_s,alarm_pass,first_sector,sector_order,"
-      "tracking_correlation,sustained_excess_px\n";
+      "tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free\n";
   for (const SignatureRun& r : runs) {
     out += fmt::format("{},{},{},{},{},{}\n", r.run, Value(r.speed_mm_s), r.skin.empty() ? kNotApplicable : r.skin,
                        r.incipient_onset ? 1 : 0, GrossCells(r), IncipientCells(r));

@@ -103,7 +103,23 @@ std::string GrossSection(const std::vector<SignatureRun>& runs, const Acceptance
 // The incipient-slip figures of the runs that have them, one vector per figure.
 struct IncipientColumns {
   std::vector<double> visible_lead, excess, amplitude_w1, amplitude_w5, alarm_lead, correlation;
+  AlarmPins alarm_pins;  // summed over the runs that alarmed
+  int alarmed_runs = 0;
 };
+
+// The labels of the alarm's pins as "slipping/stuck/free", or "none" without an alarm.
+std::string AlarmPinsCell(const IncipientSignature& s) {
+  if (std::isnan(s.alarm_s)) return kNone;
+  return fmt::format("{}/{}/{}", s.alarm_pins.slipping, s.alarm_pins.stuck, s.alarm_pins.free);
+}
+
+// The summed labels of the alarms' pins over the runs that alarmed.
+std::string AlarmPinsSummary(const IncipientColumns& c) {
+  const int total = c.alarm_pins.total();
+  if (total == 0) return "no alarm";
+  return fmt::format("{}/{}/{} of {} in {} runs ({:.0f} % slip)", c.alarm_pins.slipping, c.alarm_pins.stuck,
+                     c.alarm_pins.free, total, c.alarmed_runs, 100.0 * c.alarm_pins.slipping / total);
+}
 
 // One row of the incipient table; fills the columns. Without an incipient phase the
 // amplitudes and sectors do not apply; without external markers the correlation.
@@ -117,14 +133,20 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   if (s.has_phase) c.amplitude_w1.push_back(s.amplitude_w1_px);
   if (s.has_phase) c.amplitude_w5.push_back(s.amplitude_w5_px);
   if (s.has_external) c.correlation.push_back(s.tracking_correlation);
+  if (!std::isnan(s.alarm_s)) {
+    c.alarm_pins.slipping += s.alarm_pins.slipping;
+    c.alarm_pins.stuck += s.alarm_pins.stuck;
+    c.alarm_pins.free += s.alarm_pins.free;
+    ++c.alarmed_runs;
+  }
   const std::string first = s.sectors.first.empty() ? kNone : s.sectors.first;
   const std::string order = s.sectors.order.empty() ? kNone : s.sectors.order;
-  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>5} {:>9} {:>6}\n", r.run,
-                     Num(r.speed_mm_s), Num(s.visible_s, "{:.3f}"), Num(s.visible_lead_s, "{:.3f}"),
+  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>9} {:>6}\n",
+                     r.run, Num(r.speed_mm_s), Num(s.visible_s, "{:.3f}"), Num(s.visible_lead_s, "{:.3f}"),
                      PassCell(s.visible_lead_s >= kAcceptedLeadS), Num(s.sustained_excess_px),
                      phase(s.amplitude_w1_px),
                      phase(s.amplitude_w5_px), Num(s.alarm_s, "{:.3f}"), Num(s.alarm_lead_s, "{:.3f}"),
-                     PassCell(s.alarm_lead_s >= kAcceptedLeadS), s.has_phase ? first : kNotApplicable,
+                     PassCell(s.alarm_lead_s >= kAcceptedLeadS), AlarmPinsCell(s), s.has_phase ? first : kNotApplicable,
                      s.has_phase ? order : kNotApplicable,
                      s.has_external ? Num(s.tracking_correlation, "{:.3f}") : kNotApplicable);
 }
@@ -142,10 +164,9 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
       "incipient slip: {} of {} runs apply (fingerprint skin, fall or incipient onset); incipient onset in {}; "
       "detector W {}, s_thr {} px, I_thr {}\n",
       a.visible_lead.runs, runs.size(), onsets, params.window, params.speed_thr_px, params.count_thr);
-  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>5} {:>9} {:>6}\n", "run",
-                     "speed", "visible_s", "vis_lead", ">=0.5", "excess", "amp_w1", "amp_w5", "alarm_s", "alarm_ld",
-                     ">=0.5",
-                     "first", "order", "corr");
+  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>9} {:>6}\n",
+                     "run", "speed", "visible_s", "vis_lead", ">=0.5", "excess", "amp_w1", "amp_w5", "alarm_s",
+                     "alarm_ld", ">=0.5", "pins_skf", "first", "order", "corr");
   IncipientColumns c;
   for (const SignatureRun& r : runs) out += IncipientRow(r, c);
   // Summary: each figure's spread beside the hardware's value and the acceptance.
@@ -158,6 +179,7 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
   out += SummaryLine("amplitude W5, px/frame", Spread(c.amplitude_w5), "~0.4 (noise ~0.1)");
   out += SummaryLine("detector alarm before fall, s", Spread(c.alarm_lead, "{:.3f}"), "stopped in time in 17 of 20",
                      ">= 0.5 s in >= 17/20 of runs: " + Verdict(a.alarm_lead));
+  out += SummaryLine("alarm pins slip/stuck/free", AlarmPinsSummary(c), "-");
   out += SummaryLine("first-slipping sector", fmt::format("E/W first in {} of {} runs", a.east_west_first.passed,
                                                           a.east_west_first.runs),
                      "E and W first, then S, then N", "E/W in most runs: " + Verdict(a.east_west_first));

@@ -218,6 +218,9 @@ TEST(IncipientSignatureTest, SlipBecomesVisibleOnceTheSmoothedExcessSpeedPassesT
   // at frame 61, 0.288 at frame 62, when its four pins meet I_thr = 4.
   EXPECT_NEAR(s->alarm_s, 62 * kFrameS, kTimeTol);
   EXPECT_NEAR(s->alarm_lead_s, 83 * kFrameS, kTimeTol);
+  // The alarm's four pins are the four labelled slipping.
+  EXPECT_EQ(s->alarm_pins.slipping, 4);
+  EXPECT_EQ(s->alarm_pins.total(), 4);
   EXPECT_EQ(s->sectors.first, "E");
   EXPECT_TRUE(s->has_phase);
   EXPECT_FALSE(s->has_external);
@@ -234,6 +237,24 @@ RunRecord PinZeroSlipsRun(int slip_first, int slip_end) {
   return r;
 }
 
+TEST(IncipientSignatureTest, AlarmPinsAreCountedByTheirLabelsInTheAlarmFrame) {
+  // Pins 0-3 move 0.6 px/frame from frame 60: pin 0 labelled slipping, pins 1 and 2 stuck,
+  // pin 3 out of contact from frame 60. The detector alarms at frame 62 on all four.
+  RunRecord r = PinZeroSlipsRun(60, 160);
+  SensorRecord& sensor = r.sensors[0];
+  for (int i = 0; i < 4; ++i) MovePin(sensor, i, 60, 145, 0.6, 0.0);
+  for (int f = 60; f < 160; ++f) sensor.pin_contact[f * 20 + 3] = 0;
+  const auto s = MeasureIncipientSignature(r, sensor);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->alarm_s, 62 * kFrameS, kTimeTol);
+  EXPECT_EQ(s->alarm_pins.slipping, 1);
+  EXPECT_EQ(s->alarm_pins.stuck, 2);
+  EXPECT_EQ(s->alarm_pins.free, 1);
+  const std::string text = FormatSignatureReport({MeasureSignatures(r, sensor, {})}, {});
+  EXPECT_NE(text.find("   1/2/1 "), std::string::npos) << text;
+  EXPECT_NE(text.find("alarm pins slip/stuck/free      1/2/1 of 4 in 1 runs (25 % slip)"), std::string::npos) << text;
+}
+
 TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
   RunRecord r = PinZeroSlipsRun(60, 160);
   MovePin(r.sensors[0], 0, 60, 145, 0.1, 0.0);
@@ -242,6 +263,7 @@ TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
   EXPECT_TRUE(std::isnan(s->visible_s));
   EXPECT_TRUE(std::isnan(s->visible_lead_s));
   EXPECT_TRUE(std::isnan(s->alarm_s));
+  EXPECT_EQ(s->alarm_pins.total(), 0);
   // How far from visible: 0.1 px/frame held, half the threshold.
   EXPECT_NEAR(s->sustained_excess_px, 0.1, kSpeedTol);
 }
@@ -337,10 +359,15 @@ TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
   const std::string gross_row = csv.substr(csv.find('\n') + 1, csv.find('\n', csv.find('\n') + 1) - csv.find('\n'));
   EXPECT_EQ(gross_row.substr(0, 15), "0,none,smooth,0") << csv;
   EXPECT_NE(gross_row.find(",17,1,"), std::string::npos) << csv;
-  EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px\n"), std::string::npos) << csv;
-  // The incipient run's excess: its four pins' steady 0.6 px/frame, last column and summary.
-  EXPECT_NE(csv.find(",E,E,n/a,0.6\n"), std::string::npos) << csv;
+  EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n"), std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free\n"),
+            std::string::npos)
+      << csv;
+  // The incipient run's excess (its four pins' steady 0.6 px/frame) and its alarm's pins,
+  // the last columns, and the summary.
+  EXPECT_NE(csv.find(",E,E,n/a,0.6,4,0,0\n"), std::string::npos) << csv;
+  EXPECT_NE(text.find("alarm pins slip/stuck/free      4/0/0 of 4 in 1 runs (100 % slip)"), std::string::npos) << text;
   EXPECT_NE(text.find("sustained excess, px/frame      0.60 [0.60, 0.60] (1 of 1 runs)"), std::string::npos) << text;
 }
 
