@@ -88,9 +88,10 @@ std::string StopTrialsCsv(const std::vector<StopTrial>& trials) {
 }
 
 std::string FormatStopTable(const std::vector<StopTrial>& trials) {
-  // Per skin: trials, stopped (held), stopped before gross slip, mean lead of those.
+  // Per skin: trials, stopped (held), stopped before gross slip, and the mean lead of the
+  // stops before a gross-slip onset that still came (a held object has no onset, so no lead).
   struct Row {
-    int n = 0, stopped = 0, before_gross = 0;
+    int n = 0, stopped = 0, before_gross = 0, with_lead = 0;
     double lead_sum = 0.0;
   };
   std::map<std::string, Row> rows;
@@ -100,7 +101,10 @@ std::string FormatStopTable(const std::vector<StopTrial>& trials) {
     r.stopped += t.outcome == StopOutcome::kStopped;
     if (t.before_gross) {
       ++r.before_gross;
-      if (!std::isnan(t.lead_s)) r.lead_sum += t.lead_s;
+      if (!std::isnan(t.lead_s)) {
+        r.lead_sum += t.lead_s;
+        ++r.with_lead;
+      }
     }
   }
   std::string out = fmt::format("{:<16} {:>7} {:>16} {:>20} {:>10}   {}\n", "skin", "trials", "stopped, held",
@@ -108,7 +112,7 @@ std::string FormatStopTable(const std::vector<StopTrial>& trials) {
   for (const auto& [skin, r] : rows) {
     out += fmt::format("{:<16} {:>7} {:>9} ({:>3.0f}%) {:>13} ({:>3.0f}%) {:>8} s   {}\n", skin, r.n, r.stopped,
                        100.0 * r.stopped / r.n, r.before_gross, 100.0 * r.before_gross / r.n,
-                       r.before_gross ? fmt::format("{:.2f}", r.lead_sum / r.before_gross) : "-",
+                       r.with_lead ? fmt::format("{:.2f}", r.lead_sum / r.with_lead) : "-",
                        HardwareFigure(skin));
   }
   return out;

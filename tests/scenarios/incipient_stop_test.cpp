@@ -36,6 +36,20 @@ TEST(ScoreStopTrialTest, StoppedHeldStoppedLateAndMissed) {
   EXPECT_EQ(ScoreStopTrial(Summary(kNaN, 5.5, 5.6), 3).outcome, StopOutcome::kMissed);
 }
 
+TEST(FormatStopTableTest, MeanLeadCountsOnlyTheStopsBeforeAnOnsetThatCame) {
+  // Two trials held to the end (no onset, no lead) and one stopped 0.5 s before an onset.
+  std::vector<StopTrial> trials = {ScoreStopTrial(Summary(5.0, kNaN, kNaN), 0),
+                                   ScoreStopTrial(Summary(5.0, kNaN, kNaN), 1),
+                                   ScoreStopTrial(Summary(5.0, 5.5, 5.6), 2)};
+  for (StopTrial& t : trials) t.skin = "fingerprint-v2";
+  const std::string table = FormatStopTable(trials);
+  EXPECT_NE(table.find("fingerprint-v2         3         2 ( 67%)             3 (100%)     0.50 s"), std::string::npos)
+      << table;
+  // Every object held: no lead to average.
+  trials.pop_back();
+  EXPECT_NE(FormatStopTable(trials).find("2 (100%)        - s"), std::string::npos) << FormatStopTable(trials);
+}
+
 TEST(StopControllerTest, RetractsInStepsWithPausesAndHoldsOnceStopped) {
   RailConfig rail;
   rail.retract_speed_mm_s = 1.0;
