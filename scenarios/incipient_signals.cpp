@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "scenarios/run_signals.h"
 
@@ -23,7 +24,8 @@ IncipientAlarm FirstIncipientAlarm(const RunRecord& run, const SensorRecord& sen
       frame.pos_px(static_cast<Eigen::Index>(i), 1) = sensor.pos_px[(f * n + i) * 2 + 1];
       frame.valid[i] = sensor.valid[f * n + i];
     }
-    if (det.Update(frame).slip) return {run.time[f], f, det.slipping_pins()};
+    Decision d = det.Update(frame);
+    if (d.slip) return {run.time[f], f, std::move(d.slipping_pins)};
   }
   return {};
 }

@@ -15,7 +15,7 @@ namespace tactip {
 /// The first alarm of the incipient detector in a recorded run.
 struct IncipientAlarm {
   double time_s = std::numeric_limits<double>::quiet_NaN();  ///< NaN when it never alarms
-  size_t frame = 0;                                          ///< the alarm's frame (0 without one)
+  size_t frame = 0;  ///< the alarm's frame; 0 also without one, so check time_s first
   std::vector<int> pins;  ///< the detector's slipping set at the alarm, ascending (empty without one)
 };
 

@@ -115,8 +115,8 @@ std::string AlarmPinsCell(const IncipientSignature& s) {
 
 // The summed labels of the alarms' pins over the runs that alarmed.
 std::string AlarmPinsSummary(const IncipientColumns& c) {
+  if (c.alarmed_runs == 0) return "no alarm";
   const int total = c.alarm_pins.total();
-  if (total == 0) return "no alarm";
   return fmt::format("{}/{}/{} of {} in {} runs ({:.0f} % slip)", c.alarm_pins.slipping, c.alarm_pins.stuck,
                      c.alarm_pins.free, total, c.alarmed_runs, 100.0 * c.alarm_pins.slipping / total);
 }
@@ -179,7 +179,7 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
   out += SummaryLine("amplitude W5, px/frame", Spread(c.amplitude_w5), "~0.4 (noise ~0.1)");
   out += SummaryLine("detector alarm before fall, s", Spread(c.alarm_lead, "{:.3f}"), "stopped in time in 17 of 20",
                      ">= 0.5 s in >= 17/20 of runs: " + Verdict(a.alarm_lead));
-  out += SummaryLine("alarm pins slip/stuck/free", AlarmPinsSummary(c), "-");
+  out += SummaryLine("alarm pins slip/stuck/free", AlarmPinsSummary(c), "not labelled");
   out += SummaryLine("first-slipping sector", fmt::format("E/W first in {} of {} runs", a.east_west_first.passed,
                                                           a.east_west_first.runs),
                      "E and W first, then S, then N", "E/W in most runs: " + Verdict(a.east_west_first));

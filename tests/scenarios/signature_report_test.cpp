@@ -264,6 +264,11 @@ TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
   EXPECT_TRUE(std::isnan(s->visible_lead_s));
   EXPECT_TRUE(std::isnan(s->alarm_s));
   EXPECT_EQ(s->alarm_pins.total(), 0);
+  // No alarm: no pins to label in the table, the summary or the CSV.
+  const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
+  const std::string text = FormatSignatureReport(runs, {});
+  EXPECT_NE(text.find("alarm pins slip/stuck/free      no alarm"), std::string::npos) << text;
+  EXPECT_NE(SignatureCsv(runs).find(",0.1,none,none,none\n"), std::string::npos) << SignatureCsv(runs);
   // How far from visible: 0.1 px/frame held, half the threshold.
   EXPECT_NEAR(s->sustained_excess_px, 0.1, kSpeedTol);
 }
