@@ -88,10 +88,10 @@ double PeakSlippingSpeedPx(const SensorRecord& sensor, size_t first, size_t end,
   return peak;
 }
 
-// The labels, at the alarm's frame, of the pins in the detector's slipping set.
+// The labels, at the alarm's frame, of the pins in the detector's slipping set (none
+// without an alarm: the set is empty).
 AlarmPins LabelAlarmPins(const SensorRecord& sensor, const IncipientAlarm& alarm) {
   AlarmPins pins;
-  if (std::isnan(alarm.time_s)) return pins;
   const auto n = static_cast<size_t>(sensor.n_pins);
   for (int i : alarm.pins) {
     const size_t k = alarm.frame * n + static_cast<size_t>(i);

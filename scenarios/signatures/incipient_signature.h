@@ -19,6 +19,12 @@ struct AlarmPins {
   int stuck = 0;     ///< in contact and sticking
   int free = 0;      ///< out of contact
   int total() const { return slipping + stuck + free; }
+  AlarmPins& operator+=(const AlarmPins& o) {
+    slipping += o.slipping;
+    stuck += o.stuck;
+    free += o.free;
+    return *this;
+  }
 };
 
 /// Incipient figures of a fingerprint-skin run with a fall or an incipient onset. The

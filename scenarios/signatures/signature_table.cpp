@@ -134,9 +134,7 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   if (s.has_phase) c.amplitude_w5.push_back(s.amplitude_w5_px);
   if (s.has_external) c.correlation.push_back(s.tracking_correlation);
   if (!std::isnan(s.alarm_s)) {
-    c.alarm_pins.slipping += s.alarm_pins.slipping;
-    c.alarm_pins.stuck += s.alarm_pins.stuck;
-    c.alarm_pins.free += s.alarm_pins.free;
+    c.alarm_pins += s.alarm_pins;
     ++c.alarmed_runs;
   }
   const std::string first = s.sectors.first.empty() ? kNone : s.sectors.first;
