@@ -17,6 +17,10 @@ constexpr double kSkinPoisson = 0.5;     // rubber is nearly incompressible
 
 double SkinConfig::OuterRadiusMm() const { return radius_mm + (Fingerprint() ? ridge_height_mm : 0.0); }
 
+double SkinConfig::GelShearModulusPa() const {
+  return (gel_shear_modulus_kpa > 0.0 ? gel_shear_modulus_kpa : gel_modulus_kpa / 3.0) * 1e3;
+}
+
 double SkinConfig::ContactRadiusMm() const {
   return Fingerprint() ? std::min(contact_radius_mm, 0.5 * ridge_spacing_mm) : contact_radius_mm;
 }
@@ -247,7 +251,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   }
   // Gel column under each pin (Winkler foundation): axial and shear stiffness.
   m.k_normal_N_m = E_gel * m.cell_area_m2 / h_gel;
-  m.k_shear_N_m = (E_gel / 3.0) * m.cell_area_m2 / h_gel;
+  m.k_shear_N_m = skin.GelShearModulusPa() * m.cell_area_m2 / h_gel;
   // Skin plate bending: D / a^2 couples neighbouring pins' normal displacements.
   m.k_bend_N_m = D / (a * a);
   m.membrane_N_m = E_skin * t;

@@ -24,6 +24,7 @@ struct SkinConfig {
   double pin_mass_g = 0.2;          ///< moving mass per pin (pin plus its gel column)
   double gel_modulus_kpa = 100.0;   ///< Young's modulus of the gel filling
   double gel_depth_mm = 20.0;       ///< depth of the gel column under each pin
+  double gel_shear_modulus_kpa = 0.0; ///< shear modulus of the gel under the pins (0 = gel_modulus_kpa / 3)
   double skin_modulus_mpa = 1.0;    ///< Young's modulus of the skin rubber
   double damping_ratio = 0.7;       ///< damping ratio of each pin's normal mode
   double shear_damping_ratio = 4.0; ///< damping ratio of the skin's in-plane (shear) mode
@@ -66,6 +67,13 @@ struct SkinConfig {
       Bounds::Closed(1.0, 10000.0));
     v("gel_depth_mm", gel_depth_mm, "mm", "Height of the gel column under each pin (about the dome radius).",
       Bounds::Closed(1.0, 100.0));
+    v("gel_shear_modulus_kpa", gel_shear_modulus_kpa, "kPa",
+      "Shear modulus G of the gel the skin slides on: each pin's shear column k_shear = G A_cell / h_gel (the "
+      "smooth skin's shell carries all pins' columns in parallel). 0: gel_modulus_kpa / 3, the column's own "
+      "modulus taken as an incompressible solid. gel_modulus_kpa is a lumped normal stiffness fitted to force "
+      "against depth (it carries the skin's tension and the confined gel too); a silicone gel's own shear modulus "
+      "can be several times lower. See README 'A softer gel in shear'.",
+      Bounds::Closed(0.0, 10000.0));
     v("skin_modulus_mpa", skin_modulus_mpa, "MPa",
       "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation).",
       Bounds::Closed(0.01, 100.0));
@@ -137,6 +145,8 @@ struct SkinConfig {
       "steep rise by 1 mm and slow growth after (README).",
       Bounds::Closed(0.01, 5.0));
   }
+  /// The gel's shear modulus in Pa: gel_shear_modulus_kpa, or gel_modulus_kpa / 3 when that is 0.
+  double GelShearModulusPa() const;
   /// Radius of the contact surface: the dome plus the ridges of a fingerprint pattern.
   double OuterRadiusMm() const;
   /// Radius of each pin's spherical contact patch (fingerprint: at most half the ring step).

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include <mujoco/mujoco.h>
+
 #include "mujoco_warning_guard.h"
 #include "models/rail_rig.h"
 #include "sim/simulation.h"
@@ -145,6 +147,36 @@ TEST_F(SkinTest, MechanicsFollowMaterialFormulas) {
   const SkinMechanics t2 = SkinMechanics::From(thick, 127);
   EXPECT_NEAR(t2.k_bend_N_m / m.k_bend_N_m, 8.0, 1e-9);
   EXPECT_NEAR(t2.membrane_N_m / m.membrane_N_m, 2.0, 1e-9);
+}
+
+TEST_F(SkinTest, GelShearModulusSetsTheShearColumnsAloneAndZeroMeansAThirdOfTheGelModulus) {
+  SkinConfig cfg;
+  EXPECT_DOUBLE_EQ(cfg.GelShearModulusPa(), 100e3 / 3.0);  // 0: the column's own modulus, incompressible
+  const SkinMechanics stiff = SkinMechanics::From(cfg, 127);
+  cfg.gel_shear_modulus_kpa = 5.0;
+  const SkinMechanics soft = SkinMechanics::From(cfg, 127);
+  const double area = std::sqrt(3.0) / 2.0 * 9e-6;
+  EXPECT_NEAR(soft.k_shear_N_m, 5e3 * area / 0.02, 1e-9);
+  EXPECT_DOUBLE_EQ(soft.k_normal_N_m, stiff.k_normal_N_m);  // the normal column keeps gel_modulus_kpa
+  EXPECT_DOUBLE_EQ(soft.k_bend_N_m, stiff.k_bend_N_m);
+  // The shell keeps its damping ratio on the softer columns: c = 2 zeta sqrt(n k_shear m).
+  EXPECT_NEAR(soft.shell_damping_Ns_m / stiff.shell_damping_Ns_m, std::sqrt(5.0 / (100.0 / 3.0)), 1e-12);
+
+  // The compiled smooth skin's shell carries all 127 columns in parallel.
+  RailSceneSpec spec;
+  spec.max_depth_m = 3.1e-3;
+  spec.skin.gel_shear_modulus_kpa = 5.0;
+  const CompiledModel m = CompiledModel::FromXml(BuildRailScene(spec).xml);
+  const int joint = m.JointId("tactip/skin_shear_y");
+  EXPECT_NEAR(m.raw()->jnt_stiffness[joint], 127.0 * soft.k_shear_N_m, 1e-9);
+
+  cfg.gel_shear_modulus_kpa = -1.0;
+  try {
+    ValidateConfig(cfg);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("gel_shear_modulus_kpa = -1: must be >= 0"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(SkinTest, RailSceneCompilesWithOnlyReachablePinsCollidable) {
