@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_helpers.h"
 #include "small_tmpfs.h"
@@ -171,6 +172,22 @@ TEST_F(CliTest, ShippedSceneYamlsEqualTheBuiltInDefaults) {
     std::ifstream f(std::string(TACTIP_SOURCE_DIR) + "/assets/scenes/" + name + ".yaml");
     const std::string shipped((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     EXPECT_EQ(c.out, shipped) << name << ": regenerate with 'tactip config " << name << " --yaml --comments'";
+  }
+}
+
+TEST_F(CliTest, SoftGelMaterialsFragmentChangesOnlyTheGelShearAndSkinModuli) {
+  const std::string fragment = std::string(TACTIP_SOURCE_DIR) + "/assets/materials/soft-gel.yaml";
+  for (const std::string name : {"rail", "incipient"}) {
+    const CliResult a = Run("config " + name + " --yaml");
+    const CliResult b = Run("config " + name + " --yaml --config " + fragment);
+    ASSERT_EQ(a.code, 0) << name;
+    ASSERT_EQ(b.code, 0) << name << b.err;
+    std::istringstream da(a.out), db(b.out);
+    std::vector<std::string> changed;
+    for (std::string la, lb; std::getline(da, la) && std::getline(db, lb);) {
+      if (la != lb) changed.push_back(lb);
+    }
+    EXPECT_EQ(changed, (std::vector<std::string>{"  gel_shear_modulus_kpa: 6.67", "  skin_modulus_mpa: 0.4"})) << name;
   }
 }
 
