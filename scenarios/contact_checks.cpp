@@ -307,10 +307,9 @@ double CouplingLengthMm(const PinLattice& lattice, const SkinMechanics& mech, do
 
 // One sample of the shear ramp: load ratio, stick/slip counts and the stick boundary's
 // bracket; records each pin's load ratio at its first slip.
-DomeSample SampleDome(const PressedRig& rig, const DomePress& press, double mu, std::vector<double>& first_slip_q,
-                      bool* gross_slip) {
+DomeSample SampleDome(const PressedRig& rig, const DomePress& press, double mu, const LabelConfig& labels,
+                      std::vector<double>& first_slip_q, bool* gross_slip) {
   const int N = rig.n;
-  static const LabelConfig labels;
   std::vector<PinContactSample> samples(N);
   std::vector<std::uint8_t> pin_contact(N), pin_slip(N);
   double q = 0.0, p = 0.0;
@@ -346,6 +345,8 @@ DomeSample SampleDome(const PressedRig& rig, const DomePress& press, double mu, 
 std::vector<double> ShearDome(PressedRig& rig, const DomeCheckOptions& opts, const SkinMechanics& mech,
                               const DomePress& press, DomeCheck& out) {
   const double v = opts.shear_speed_mm_s * 1e-3, mu = opts.rig.contact.friction;
+  LabelConfig labels;
+  labels.slip_speed_m_s = opts.slip_label_fraction * v;
   const double u_limit = 4.0 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
   const double y0 = rig.PlateY(), t0 = rig.t;
   std::vector<double> first_slip_q(rig.n, std::nan(""));
@@ -357,7 +358,7 @@ std::vector<double> ShearDome(PressedRig& rig, const DomeCheckOptions& opts, con
     next_sample += opts.sample_every_s;
     rig.ReadContacts();
     bool gross = false;
-    out.samples.push_back(SampleDome(rig, press, mu, first_slip_q, &gross));
+    out.samples.push_back(SampleDome(rig, press, mu, labels, first_slip_q, &gross));
     if (gross) {
       out.gross_q_ratio = out.samples.back().q_ratio;
       break;

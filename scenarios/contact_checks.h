@@ -62,6 +62,10 @@ struct DomeCheckOptions {
   double shear_speed_mm_s = 0.1;    ///< plate tangential speed (quasi-static: viscous forces < 1 % of mu P)
   double sample_every_s = 0.01;     ///< sampling interval of the shear ramp
   double tolerance = 0.02;          ///< allowance on c/a for the lattice's discreteness (one pin of ~60)
+  /// A contacting pin on the friction cone is labelled slipping once it slides faster than this
+  /// fraction of the plate's speed (1 % of 0.1 mm/s = 1 um/s). A saturated pin that the membrane
+  /// drags along with the plate slides slowly, yet it has slipped in the exact solution.
+  double slip_label_fraction = 0.01;
 };
 
 /// One sample of the dome's shear ramp.
