@@ -83,8 +83,6 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
   EXPECT_THROW(RunDomeCheck(rigid), InputError);
 }
 
-// Membrane coupling grows with skin thickness; a strongly coupled lattice releases each
-// ring before Cattaneo-Mindlin does, a weakly coupled one stays between CM and the brush.
 // Over a gel five times softer in shear the 1 mm membrane drags a saturated outer ring along
 // with the plate, sliding at a fraction of the plate's speed: it has slipped (its force is on
 // the cone) and the labels must say so, or the release comes out late (at the former 10 um/s
@@ -100,6 +98,8 @@ TEST(DomeCheckTest, ASaturatedPinDraggedSlowlyByTheMembraneIsLabelledSlippingAtI
   EXPECT_TRUE(DomeCriteria{}.ReleaseOk(c)) << "largest release error " << c.release_error_max << " Q/muP";
 }
 
+// Membrane coupling grows with skin thickness; a strongly coupled lattice releases each
+// ring before Cattaneo-Mindlin does, a weakly coupled one stays between CM and the brush.
 TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {
   DomeCheckOptions o;
   o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
