@@ -13,6 +13,10 @@
 
 namespace tactip {
 
+/// The range of skin.skin_modulus_mpa: from a soft silicone gel's few kPa to a stiff rubber's.
+inline constexpr double kSkinModulusMinMpa = 0.001;
+inline constexpr double kSkinModulusMaxMpa = 100.0;
+
 /// Skin geometry and materials (the `skin.` section). Stiffnesses are derived from
 /// these values by SkinMechanics, never set directly.
 struct SkinConfig {
@@ -76,7 +80,7 @@ struct SkinConfig {
       Bounds::Closed(0.0, 10000.0));
     v("skin_modulus_mpa", skin_modulus_mpa, "MPa",
       "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation).",
-      Bounds::Closed(0.01, 100.0));
+      Bounds::Closed(kSkinModulusMinMpa, kSkinModulusMaxMpa));
     v("damping_ratio", damping_ratio, "",
       "Damping ratio of each pin's normal mode (gel viscosity); joint damping 2 zeta sqrt(k m), "
       "integrated implicitly.",

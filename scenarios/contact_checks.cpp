@@ -67,7 +67,8 @@ BrushCheck RunBrushCheck(const BrushCheckOptions& opts) {
 
   // Shear ramp at constant speed past the last pin's slip displacement, sampled.
   const double u_max = opts.overshoot * mu * n_max / out.k_t_N_m;
-  const double v = opts.shear_speed_mm_s * 1e-3;
+  out.shear_speed_mm_s = std::max(opts.shear_speed_mm_s, 1e3 * u_max / opts.max_ramp_s);
+  const double v = out.shear_speed_mm_s * 1e-3;
   const double y0 = rig.PlateY();
   const double t0 = rig.t;
   LabelConfig labels;
@@ -292,19 +293,6 @@ DomePress ReadDomePress(const PressedRig& rig, const ContactRigSpec& spec, DomeC
   return press;
 }
 
-// Coupling length: with edges of every direction, sum_e k (l_e . grad u)^2 averages to
-// (1/2) sum_e k l_e^2 |grad u|^2 over the lattice's area, against sum_i k_tip u^2.
-double CouplingLengthMm(const PinLattice& lattice, const SkinMechanics& mech, double r_out_m) {
-  double edge_sum = 0.0;
-  for (const auto& e : lattice.neighbours) {
-    const auto& p = lattice.pins[e[0]].normal;
-    const auto& q = lattice.pins[e[1]].normal;
-    const double l = r_out_m * std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
-    edge_sum += mech.k_couple_N_m * l * l;
-  }
-  return 1e3 * std::sqrt(edge_sum / (2.0 * static_cast<double>(lattice.pins.size()) * mech.k_tip_N_m));
-}
-
 // One sample of the shear ramp: load ratio, stick/slip counts and the stick boundary's
 // bracket; records each pin's load ratio at its first slip.
 DomeSample SampleDome(const PressedRig& rig, const DomePress& press, double mu, const LabelConfig& labels,
@@ -344,7 +332,7 @@ DomeSample SampleDome(const PressedRig& rig, const DomePress& press, double mu, 
 // out.samples and out.gross_q_ratio, returns each pin's load ratio at its first slip.
 std::vector<double> ShearDome(PressedRig& rig, const DomeCheckOptions& opts, const SkinMechanics& mech,
                               const DomePress& press, DomeCheck& out) {
-  const double v = opts.shear_speed_mm_s * 1e-3, mu = opts.rig.contact.friction;
+  const double v = out.shear_speed_mm_s * 1e-3, mu = opts.rig.contact.friction;
   LabelConfig labels;
   labels.slip_speed_m_s = opts.slip_label_fraction * v;
   const double u_limit = 4.0 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
@@ -447,6 +435,57 @@ void CompareRingReleases(const QuasiStaticShear& qs, const DomePress& press, con
 
 }  // namespace
 
+// Coupling length: with edges of every direction, sum_e k (l_e . grad u)^2 averages to
+// (1/2) sum_e k l_e^2 |grad u|^2 over the lattice's area, against sum_i k_tip u^2.
+double CouplingLengthMm(const PinLattice& lattice, const SkinMechanics& mech, double r_out_m) {
+  double edge_sum = 0.0;
+  for (const auto& e : lattice.neighbours) {
+    const auto& p = lattice.pins[e[0]].normal;
+    const auto& q = lattice.pins[e[1]].normal;
+    const double l = r_out_m * std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+    edge_sum += mech.k_couple_N_m * l * l;
+  }
+  return 1e3 * std::sqrt(edge_sum / (2.0 * static_cast<double>(lattice.pins.size()) * mech.k_tip_N_m));
+}
+
+double ContinuumSkinModulusMpa(const SkinConfig& skin, double depth_mm) {
+  SkinConfig s = skin;
+  const PinLattice lattice = PinLattice::Build(s);
+  const double r_out_mm = s.OuterRadiusMm();
+  const double target_mm = kContinuumReach * std::sqrt(depth_mm * (2.0 * r_out_mm - depth_mm));
+  const auto reach_mm = [&](double modulus_mpa) {
+    s.skin_modulus_mpa = modulus_mpa;
+    return CouplingLengthMm(lattice, SkinMechanics::From(s, lattice), r_out_mm * 1e-3);
+  };
+  double lo = kSkinModulusMinMpa, hi = kSkinModulusMaxMpa;
+  if (reach_mm(lo) > target_mm) {
+    throw InputError(fmt::format("the continuum-regime dome needs a membrane coupling length of {:.2f} mm, a third of "
+                                 "the contact radius, but even a {:g} MPa skin couples over {:.2f} mm",
+                                 target_mm, lo, reach_mm(lo)));
+  }
+  if (reach_mm(hi) < target_mm) return hi;
+  // The coupling length grows with the modulus: the membrane's tension and its valley
+  // hinges both scale with E.
+  while (hi / lo > 1.0001) {
+    const double mid = std::sqrt(lo * hi);
+    (reach_mm(mid) < target_mm ? lo : hi) = mid;
+  }
+  return std::sqrt(lo * hi);
+}
+
+DomeCheckOptions MembraneDomeOptions(const SimConfig& sim, const SkinConfig& skin, const ContactConfig& contact) {
+  CheckDomeSkin(skin);
+  DomeCheckOptions d;
+  d.rig.sim = sim;
+  d.rig.skin = skin;
+  d.rig.contact = contact;
+  return d;
+}
+
+std::string ContinuumDomeSetting(const DomeCheckOptions& configured) {
+  return fmt::format("skin.skin_modulus_mpa={:.4g}", ContinuumSkinModulusMpa(configured.rig.skin, configured.depth_mm));
+}
+
 DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   ContactRigSpec spec = opts.rig;
   CheckDomeSkin(spec.skin);
@@ -458,6 +497,8 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   DomeCheck out;
   const DomePress press = ReadDomePress(rig, spec, out);
   out.coupling_length_mm = CouplingLengthMm(lattice, mech, spec.skin.OuterRadiusMm() * 1e-3);
+  const double travel_mm = 1e3 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
+  out.shear_speed_mm_s = std::max(opts.shear_speed_mm_s, travel_mm / opts.max_ramp_s);
   const std::vector<double> first_slip_q = ShearDome(rig, opts, mech, press, out);
   const DomeBand band{opts.tolerance};
   JudgeSamples(band, out);
@@ -496,9 +537,10 @@ bool DomeCriteria::Pass(const DomeCheck& c) const {
 std::string FormatDomeCheck(const DomeCheck& c, const DomeCriteria& k) {
   const auto verdict = [](bool ok) { return ok ? "PASS" : "FAIL"; };
   std::string out = fmt::format("  {} pins in contact, mu P = {:.4f} N, contact radius a = {:.2f} mm (fitted parabolic "
-                                "pressure), membrane coupling length lambda = {:.2f} mm = {:.2f} a\n",
+                                "pressure), membrane coupling length lambda = {:.2f} mm = {:.2f} a; sheared at "
+                                "{:.2g} mm/s\n",
                                 c.pins_in_contact, c.mu_P_N, c.contact_radius_mm, c.coupling_length_mm,
-                                c.coupling_length_mm / c.contact_radius_mm);
+                                c.coupling_length_mm / c.contact_radius_mm, c.shear_speed_mm_s);
   out += fmt::format("  {:>8} {:>8} {:>15} {:>10} {:>10} {:>9}\n", "Q/muP", "c/a_sim", "c/a_resolved", "c/a_CM",
                      "c/a_brush", "stick/in");
   const size_t stride = std::max<size_t>(1, c.samples.size() / 12);
@@ -599,8 +641,9 @@ double SpearmanCorrelation(const std::vector<double>& a, const std::vector<doubl
 
 std::string FormatBrushCheck(const BrushCheck& c, double agreement_required, double load_error_allowed) {
   std::string out = fmt::format(
-      "brush model (uncoupled {} lattice, {} pins in contact, k_t = {:.3g} N/m, mu P = {:.4f} N)\n", c.skin_pattern,
-      c.pins_in_contact, c.k_t_N_m, c.mu_P_N);
+      "brush model (uncoupled {} lattice, {} pins in contact, k_t = {:.3g} N/m, mu P = {:.4f} N; sheared at {:.2g} "
+      "mm/s)\n",
+      c.skin_pattern, c.pins_in_contact, c.k_t_N_m, c.mu_P_N, c.shear_speed_mm_s);
   out += fmt::format("  {:>8} {:>10} {:>10} {:>8} {:>10} {:>10}\n", "u_mm", "Q_sim_N", "Q_brush_N", "err_%",
                      "slip_sim", "slip_brush");
   const size_t stride = std::max<size_t>(1, c.samples.size() / 12);

@@ -18,6 +18,9 @@ struct BrushCheckOptions {
   double shear_speed_mm_s = 0.5;   ///< plate tangential speed during the shear ramp (quasi-static)
   double shear_damping_ratio = 0.7;  ///< pin shear damping for the check (viscous forces stay < 0.1 % of mu P)
   double overshoot = 1.3;          ///< shear to this multiple of the last pin's slip displacement
+  /// Over a gel soft in shear the ramp is long; the plate then moves faster than
+  /// shear_speed_mm_s so that the ramp takes at most this long.
+  double max_ramp_s = 20.0;
   double sample_every_s = 0.01;    ///< sampling interval of the shear ramp
   double min_load_fraction = 0.1;  ///< load error is judged where Q_brush > this * mu P (below, the
                                    ///< shear-rate damping force is not negligible)
@@ -42,6 +45,7 @@ struct BrushCheck {
   double load_error_max = 0.0;   ///< max |Q - Q_brush| / Q_brush where Q_brush is not tiny
   double mu_P_N = 0.0;           ///< mu times the total normal load (the gross-slip load)
   double k_t_N_m = 0.0;          ///< per-pin shear stiffness
+  double shear_speed_mm_s = 0.0; ///< the plate's tangential speed on the ramp
   int pins_in_contact = 0;       ///< pins touching the plate after the press
   /// Spearman rank correlation between the displacement at which each pin first slipped
   /// and the one at which the brush model has it slip (k_t u > mu N_i: least-loaded pins
@@ -60,6 +64,9 @@ struct DomeCheckOptions {
   ContactRigSpec rig;               ///< skin (a membrane-coupled lattice), contact, solver
   double depth_mm = 3.0;            ///< plate indentation at the apex (3 mm: 37 v2 pins in contact)
   double shear_speed_mm_s = 0.1;    ///< plate tangential speed (quasi-static: viscous forces < 1 % of mu P)
+  /// A lattice soft in shear needs a long travel to gross slip, about mu P / (N k_tip); the
+  /// plate then moves faster than shear_speed_mm_s so that this travel takes at most this long.
+  double max_ramp_s = 80.0;
   double sample_every_s = 0.01;     ///< sampling interval of the shear ramp
   double tolerance = 0.02;          ///< allowance on c/a for the lattice's discreteness (one pin of ~60)
   /// A contacting pin on the friction cone is labelled slipping once it slides faster than this
@@ -120,6 +127,7 @@ struct DomeCheck {
   int release_pins_compared = 0;
   std::vector<DomeRing> rings;  ///< outermost first
   double sim_time_s = 0.0;      ///< simulated time of the press and the shear ramp
+  double shear_speed_mm_s = 0.0;  ///< the plate's tangential speed on the ramp
 };
 
 /// Exact quasi-static Coulomb solution of a membrane-coupled lattice sheared by a rigid
@@ -154,6 +162,29 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N
 
 /// Throws InputError unless the skin is the membrane-coupled lattice the dome check needs.
 void CheckDomeSkin(const SkinConfig& skin);
+
+/// The dome check's options on this solver, skin and contact (the other options at their
+/// defaults); throws InputError unless the skin is a membrane-coupled lattice.
+DomeCheckOptions MembraneDomeOptions(const SimConfig& sim, const SkinConfig& skin, const ContactConfig& contact);
+
+/// The membrane coupling length (mm) of a lattice whose pins lie on a sphere of radius
+/// r_out_m: lambda = sqrt(sum_edges k_couple l^2 / (2 sum_pins k_tip)).
+double CouplingLengthMm(const PinLattice& lattice, const SkinMechanics& mech, double r_out_m);
+
+/// The coupling length's reach over the contact radius in the continuum regime that the
+/// Cattaneo-Mindlin-brush band assumes: the membrane spreads a pin's load over a third of a.
+inline constexpr double kContinuumReach = 1.0 / 3.0;
+
+/// The skin modulus (MPa) that gives this membrane lattice, pressed `depth_mm` onto a flat
+/// plate, the continuum regime's coupling length kContinuumReach * a, with a the dome's chord
+/// at that depth, sqrt(depth (2 R_out - depth)); the skin's thickness and the gel stay as
+/// configured. Bisects within the config's bounds on skin.skin_modulus_mpa; throws
+/// InputError when even the softest skin couples further.
+double ContinuumSkinModulusMpa(const SkinConfig& skin, double depth_mm);
+
+/// The config override that turns a configured dome into the continuum-regime one:
+/// "skin.skin_modulus_mpa=<ContinuumSkinModulusMpa>".
+std::string ContinuumDomeSetting(const DomeCheckOptions& configured);
 
 /// Presses a membrane-coupled lattice onto a flat plate and shears the plate slowly to
 /// gross slip (single-coefficient Coulomb friction), comparing the stick region with

@@ -146,23 +146,25 @@ AccuracyReport RunRailAccuracy(const AccuracyOptions& o) {
   });
 }
 
-// The dome checks of `validate contact` at one setting: the continuum-regime (0.3 mm) and
-// the configured membrane lattice (fingerprint-v2 unless the base config names another).
+// The dome's config at one setting: fingerprint-v2 (unless the base config names another
+// skin) at 1 ms, with `extra` last.
+DomeCheckOptions DomeAt(const AccuracyOptions& o, const AccuracySetting& s, const std::vector<std::string>& extra) {
+  std::vector<std::string> sets = SkinPreset("fingerprint-v2");
+  sets.push_back("sim.timestep_s=0.001");
+  sets.insert(sets.end(), o.base.overrides.begin(), o.base.overrides.end());
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  sets.insert(sets.end(), s.overrides.begin(), s.overrides.end());
+  const auto cfg = LoadConfig<RailScenarioConfig>(o.base.yaml_path, sets);
+  return MembraneDomeOptions(cfg.sim, cfg.skin, cfg.contact);
+}
+
+// The dome checks of `validate contact` at one setting: the continuum-regime lattice (the
+// skin softened to lambda = a/3) and the configured membrane lattice.
 std::vector<DomeCheck> RunDomes(const AccuracyOptions& o, const AccuracySetting& s, double* wall_s) {
+  const DomeCheckOptions configured = DomeAt(o, s, {});
   std::vector<DomeCheck> out;
   *wall_s = 0.0;
-  for (const char* thickness : {"skin.thickness_mm=0.3", ""}) {
-    std::vector<std::string> sets = SkinPreset("fingerprint-v2");
-    sets.push_back("sim.timestep_s=0.001");
-    sets.insert(sets.end(), o.base.overrides.begin(), o.base.overrides.end());
-    if (*thickness) sets.push_back(thickness);
-    sets.insert(sets.end(), s.overrides.begin(), s.overrides.end());
-    const auto cfg = LoadConfig<RailScenarioConfig>(o.base.yaml_path, sets);
-    DomeCheckOptions d;
-    d.rig.sim = cfg.sim;
-    d.rig.skin = cfg.skin;
-    d.rig.contact = cfg.contact;
-    CheckDomeSkin(d.rig.skin);
+  for (const DomeCheckOptions& d : {DomeAt(o, s, {ContinuumDomeSetting(configured)}), configured}) {
     const auto t0 = std::chrono::steady_clock::now();
     out.push_back(RunDomeCheck(d));
     *wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

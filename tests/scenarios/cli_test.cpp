@@ -98,8 +98,8 @@ TEST_F(CliTest, BadInputGetsOneLineAndExitCode2) {
       {"info " + P("text.h5"), "not an HDF5 file"},
       {"validate contact --set skin.thicknes=1", "unknown config key 'skin.thicknes'"},
       {"validate contact --set skin.thickness_mm=9", "skin.thickness_mm = 9: must be <= 5"},
-      {"validate contact --set skin.pin_length_mm=3",
-       "continuum-regime dome (skin.thickness_mm=0.3): skin.pin_length_mm = 3:"},
+      {"validate contact --set skin.gel_shear_modulus_kpa=0.1",
+       "the continuum-regime dome needs a membrane coupling length of"},
       {"validate contact --skin smooth", "needs the membrane-coupled lattice"},
   };
   for (const auto& c : cases) {

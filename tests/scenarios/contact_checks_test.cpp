@@ -98,6 +98,36 @@ TEST(DomeCheckTest, ASaturatedPinDraggedSlowlyByTheMembraneIsLabelledSlippingAtI
   EXPECT_TRUE(DomeCriteria{}.ReleaseOk(c)) << "largest release error " << c.release_error_max << " Q/muP";
 }
 
+// validate contact judges the band on a continuum-regime lattice: the configured one with its
+// skin softened until the membrane reaches a third of the dome's chord. Over the soft gel (the
+// materials fragment) the former fixed 0.3 mm skin coupled over 0.46 a and missed the band
+// (86.5 %, its exact solution too); the softened skin lands in it.
+TEST(DomeCheckTest, ASkinSoftenedToAThirdOfTheChordPutsTheSoftGelsStickBoundaryInTheBand) {
+  DomeCheckOptions o;
+  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
+  o.rig.skin.gel_shear_modulus_kpa = 6.67;
+  o.rig.skin.skin_modulus_mpa = 0.4;
+  o.rig.sim.timestep_s = 0.001;
+  const double modulus_mpa = ContinuumSkinModulusMpa(o.rig.skin, o.depth_mm);
+  EXPECT_LT(modulus_mpa, 0.4);
+  o.rig.skin.skin_modulus_mpa = modulus_mpa;
+  o.max_ramp_s = 15.0;  // to save time (the command: 80 s)
+  const PinLattice lattice = PinLattice::Build(o.rig.skin);
+  const double r_out_mm = o.rig.skin.OuterRadiusMm();
+  const double chord_mm = std::sqrt(o.depth_mm * (2.0 * r_out_mm - o.depth_mm));
+  EXPECT_NEAR(CouplingLengthMm(lattice, SkinMechanics::From(o.rig.skin, lattice), r_out_mm * 1e-3), chord_mm / 3.0,
+              1e-3 * chord_mm);
+  const DomeCheck c = RunDomeCheck(o);
+  EXPECT_NEAR(c.coupling_length_mm / c.contact_radius_mm, 1.0 / 3.0, 0.03);
+  EXPECT_GT(c.shear_speed_mm_s, o.shear_speed_mm_s) << "a ramp soft in shear is sped up";
+  EXPECT_TRUE(DomeCriteria{}.Pass(c)) << "largest release error " << c.release_error_max << " Q/muP";
+  EXPECT_GE(c.bracket_fraction, 0.9);
+  EXPECT_GE(c.qs_bracket_fraction, 0.9);
+  // A gel too soft in shear for any skin in the config's range is refused.
+  o.rig.skin.gel_shear_modulus_kpa = 0.1;
+  EXPECT_THROW(ContinuumSkinModulusMpa(o.rig.skin, o.depth_mm), InputError);
+}
+
 // Membrane coupling grows with skin thickness; a strongly coupled lattice releases each
 // ring before Cattaneo-Mindlin does, a weakly coupled one stays between CM and the brush.
 TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {

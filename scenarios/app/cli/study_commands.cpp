@@ -46,39 +46,37 @@ DomeCheckOptions DomeOptions(const ConfigArgs& c, const std::vector<std::string>
   dome.sets.insert(dome.sets.end(), c.sets.begin(), c.sets.end());
   dome.sets.insert(dome.sets.end(), extra.begin(), extra.end());
   const RailScenarioConfig cfg = RailFamily(FindScenario("rail")).Load(dome.Source());
-  DomeCheckOptions d;
-  d.rig.sim = cfg.sim;
-  d.rig.skin = cfg.skin;
-  d.rig.contact = cfg.contact;
-  CheckDomeSkin(d.rig.skin);
-  return d;
+  return MembraneDomeOptions(cfg.sim, cfg.skin, cfg.contact);
 }
 
 // Runs one dome check and prints it; true when it passes.
 bool RunDome(const DomeCheckOptions& d, const DomeCriteria& k, const std::string& title) {
   const SkinConfig& skin = d.rig.skin;
-  std::fprintf(stderr, "validate: shearing the %s lattice (%g mm skin) to gross slip\n", skin.pattern.c_str(),
-               skin.thickness_mm);
+  std::fprintf(stderr, "validate: shearing the %s lattice (gel %.4g kPa in shear) to gross slip\n",
+               skin.pattern.c_str(), skin.GelShearModulusPa() * 1e-3);
   const DomeCheck dc = RunDomeCheck(d);
-  std::printf("dome under rising tangential load, %s (%s, skin.thickness_mm = %g)\n%s", title.c_str(),
-              skin.pattern.c_str(), skin.thickness_mm, FormatDomeCheck(dc, k).c_str());
+  std::printf("dome under rising tangential load, %s (%s, %g mm skin of %g MPa on a gel of %.4g kPa in shear)\n%s",
+              title.c_str(), skin.pattern.c_str(), skin.thickness_mm, skin.skin_modulus_mpa,
+              skin.GelShearModulusPa() * 1e-3, FormatDomeCheck(dc, k).c_str());
   return k.Pass(dc);
 }
 
 // tactip validate contact: the brush check on the uncoupled lattice, then the dome on the
 // membrane-coupled lattice (fingerprint-v2 unless --skin names another membrane skin) at
-// 1 ms, twice: with a 0.3 mm skin (membrane reach a third of the contact radius, the regime
-// of the continuum band) and as configured. Every config is checked before anything runs.
+// 1 ms, twice: with the skin softened until the membrane reaches a third of the contact
+// radius (the regime of the continuum band) and as configured. Every config is checked
+// before anything runs.
 int RunContactChecks(const ConfigArgs& c) {
   // The brush check's lattice: the rail scene's config as generate would load it (--skin
   // preset, then --set).
   const RailScenarioConfig rail = RailFamily(FindScenario("rail")).Load(c.Source());
   const DomeCheckOptions configured_dome = DomeOptions(c, {});
   const DomeCheckOptions continuum_dome = [&] {
+    const std::string softened = ContinuumDomeSetting(configured_dome);
     try {
-      return DomeOptions(c, {"skin.thickness_mm=0.3"});
+      return DomeOptions(c, {softened});
     } catch (const InputError& e) {
-      throw InputError(std::string("continuum-regime dome (skin.thickness_mm=0.3): ") + e.what());
+      throw InputError("continuum-regime dome (" + softened + "): " + e.what());
     }
   }();
   BrushCheckOptions o;
@@ -93,7 +91,7 @@ int RunContactChecks(const ConfigArgs& c) {
   bool ok = bc.state_agreement >= kAgreement && bc.load_error_max <= kLoadError && bc.slip_order_correlation >= 0.9;
   DomeCriteria continuum, configured;
   configured.judge_band = false;
-  ok = RunDome(continuum_dome, continuum, "continuum-regime lattice, its thickness fixed") && ok;
+  ok = RunDome(continuum_dome, continuum, "continuum-regime lattice, its skin softened to lambda = a/3") && ok;
   ok = RunDome(configured_dome, configured, "configured lattice") && ok;
   if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
   return ok ? 0 : 1;
