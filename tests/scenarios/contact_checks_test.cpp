@@ -38,6 +38,19 @@ TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
   EXPECT_NEAR(c.samples.back().q_N, c.mu_P_N, kLoadTolerance * c.mu_P_N);
 }
 
+// Over a gel five times softer in shear the uncoupled pins need five times the travel to
+// slip; the ramp is sped up to fit its time limit and still follows the brush model.
+TEST(BrushModelTest, ASoftGelsLongerRampIsShearedFasterAndStillMatches) {
+  BrushCheckOptions o;
+  o.rig.skin.gel_shear_modulus_kpa = 6.67;
+  o.max_ramp_s = 10.0;  // to save time (the command: 20 s)
+  const BrushCheck c = RunBrushCheck(o);
+  EXPECT_GT(c.shear_speed_mm_s, o.shear_speed_mm_s);
+  EXPECT_GE(c.state_agreement, kStateAgreement) << "over " << c.pin_samples << " pin-samples";
+  EXPECT_LE(c.load_error_max, kLoadTolerance);
+  EXPECT_GE(c.slip_order_correlation, kSlipOrder);
+}
+
 // The membrane-coupled fingerprint-v2 lattice under rising tangential load (physics.md:
 // gross slip at Q = mu P; the stick region shrinks from the outside in).
 TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
