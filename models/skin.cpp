@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "models/rim_anchor.h"
 #include "sim/pressing_axis.h"
 
 namespace tactip {
@@ -89,6 +90,13 @@ void SkinConfig::ValidateRules() const {
   }
   if (contact_radius_mm >= radius_mm) {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
+  }
+  const double edge_mm = reach_mm + 0.5 * (Fingerprint() ? ridge_spacing_mm : pitch_mm);
+  if (rim == "clamped" && edge_mm >= 0.5 * std::numbers::pi * radius_mm) {
+    FailRule("skin.rim", rim,
+             fmt::format("the pattern's edge ({:.1f} mm of arc) must lie inside the clamped rim at the dome's base "
+                         "({:.1f} mm)",
+                         edge_mm, 0.5 * std::numbers::pi * radius_mm));
   }
   if (shell_damping == "gel" && coupling != "shell") {
     FailRule("skin.shell_damping", shell_damping,
@@ -281,6 +289,13 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& latt
     ++degree[e[1]];
   }
   m.max_degree = degree.empty() ? 0 : *std::max_element(degree.begin(), degree.end());
+  const RimAnchor rim = RimAnchor::Of(skin, lattice);
+  m.k_rim_N_m = rim.k_N_m;
+  m.rim_ring = rim.outer_ring;
+  if (rim.outer_ring >= 0 && skin.coupling == "membrane") {
+    const double share = rim.PerPinN_m();
+    m.k_rim_pin_N_m = m.k_rock_N_m > 0.0 ? 1.0 / (1.0 / share + 1.0 / m.k_rock_N_m) : share;
+  }
   return m;
 }
 
@@ -289,7 +304,7 @@ double SkinMechanics::StiffestOmega() const {
 }
 
 double SkinMechanics::StiffestShearOmega() const {
-  return std::sqrt((k_tip_N_m + 2.0 * max_degree * k_couple_N_m) / pin_mass_kg);
+  return std::sqrt((k_tip_N_m + k_rim_pin_N_m + 2.0 * max_degree * k_couple_N_m) / pin_mass_kg);
 }
 
 namespace {
@@ -351,10 +366,10 @@ void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
   shell.Set("name", plan.names.Shell());
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
-                            "shear damping {:.3g} N s/m, normal damping {:.3g} N s/m",
+                            "shear damping {:.3g} N s/m, normal damping {:.3g} N s/m, clamped rim {:.3g} N/m",
                             skin.pattern, skin.coupling, n_pins, mech.k_normal_N_m, mech.k_shear_N_m,
                             mech.k_bend_N_m, mech.membrane_N_m, mech.k_rock_N_m, mech.k_tip_N_m, mech.k_couple_N_m,
-                            plan.c_tip, plan.c_normal));
+                            plan.c_tip, plan.c_normal, mech.k_rim_N_m));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
   if (!plan.shell_mode) return;
@@ -363,7 +378,7 @@ void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
         .Set("name", plan.names.Part(std::string("skin_shear_") + axis))
         .Set("type", "slide")
         .Set("axis", std::string(axis) == "y" ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
-        .Set("stiffness", static_cast<double>(n_pins) * mech.k_shear_N_m)
+        .Set("stiffness", static_cast<double>(n_pins) * mech.k_shear_N_m + mech.k_rim_N_m)
         .Set("damping", mech.shell_damping_Ns_m);
   }
 }
@@ -397,7 +412,7 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
           .Set("name", names.PinShearJoint(i, axis))
           .Set("type", "slide")
           .Set("axis", axis == 'y' ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
-          .Set("stiffness", mech.k_tip_N_m)
+          .Set("stiffness", mech.TipStiffness(pin.ring))
           .Set("damping", plan.c_tip);
     }
   }

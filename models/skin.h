@@ -35,6 +35,7 @@ struct SkinConfig {
   std::string shell_damping = "viscous"; ///< shell skin: viscous (fixed damper) or gel (follows the carried mass)
   double contact_radius_mm = 1.5;   ///< radius of the spherical contact patch at each pin
   std::string coupling = "shell";   ///< how pins are coupled through the skin: shell, membrane or none
+  std::string rim = "free";         ///< the skin beyond the pattern: free, or clamped at the dome's base
   std::string pattern = "smooth";   ///< smooth, fingerprint-v1, fingerprint-v2
   double ridge_spacing_mm = 3.0;    ///< fingerprint: radial step between ridge rings (arc length)
   double ridge_height_mm = 2.0;     ///< fingerprint: ridge height above the skin (v2: peak-to-trough)
@@ -108,6 +109,14 @@ struct SkinConfig {
       "the fingerprint skins, which show partial slip. none: every pin on its own gel column, no coupling - the "
       "brush model, used to validate the contact mechanics.",
       Choices{"shell", "membrane", "none"});
+    v("rim", rim, "",
+      "The skin beyond the pin pattern. free: not modelled; the pattern's in-plane motion is held by the gel "
+      "alone. clamped: the skin rubber from the pattern's edge (outermost ring plus half a step) to the dome's "
+      "base (arc pi R / 2), where the skin is clamped to the sensor, is a flat annular membrane (E t, Poisson "
+      "1/3 as the lattice's network) that pulls a translated pattern back with K = 2 pi mu t (1 + kappa) / "
+      "(kappa ln(b/a) - (b^2 - a^2) / (kappa (a^2 + b^2))), kappa = (3 - nu) / (1 + nu): added to the shell's "
+      "shear springs (shell) or shared by the outermost ring's pins (membrane). See README 'The skin's rim'.",
+      Choices{"free", "clamped"});
     v("pattern", pattern, "",
       "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "
       "ridge rings with the pins extending into them (they pivot: the inner marker and the outer contact point "
@@ -296,6 +305,10 @@ struct SkinMechanics {
   double tip_damping_Ns_m = 0.0;    ///< shear damping per pin DOF
   double marker_rock_factor = 0.0;  ///< inner marker = contact point - this * ridge deflection
   int max_degree = 6;               ///< most neighbours of any pin
+  // The clamped rim (skin.rim = clamped; set by From(skin, lattice), else zero):
+  double k_rim_N_m = 0.0;           ///< the skin annulus against a translation of the whole pattern (RimAnchor)
+  double k_rim_pin_N_m = 0.0;       ///< membrane lattice: an outer-ring pin's share, in series with its ridge
+  int rim_ring = -1;                ///< the ring the annulus holds (-1: none)
 
   static SkinMechanics From(const SkinConfig& skin, size_t n_pins);
   /// With the lattice: the neighbour count enters the stiffest shear mode.
@@ -303,6 +316,9 @@ struct SkinMechanics {
   /// Highest natural frequency of the pin lattice (rad/s): normal mode with every
   /// neighbour in antiphase, omega = sqrt((k_n + 12 k_b) / m).
   double StiffestOmega() const;
+  /// A pin's own shear stiffness (membrane or uncoupled lattice): k_tip, plus its share of the
+  /// clamped rim on the outermost ring.
+  double TipStiffness(int ring) const { return ring == rim_ring ? k_tip_N_m + k_rim_pin_N_m : k_tip_N_m; }
   /// Highest shear-mode frequency of a membrane lattice (Gershgorin bound), rad/s.
   double StiffestShearOmega() const;
   /// Shear damping per pin DOF of a membrane/uncoupled lattice at this timestep: the

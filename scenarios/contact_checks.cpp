@@ -189,11 +189,20 @@ Segment SolveSegment(const Eigen::MatrixXd& K, const std::vector<double>& normal
 QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
                                        double mu, int grid_points, double presliding_m) {
+  return SolveQuasiStaticShear(lattice, std::vector<double>(lattice.pins.size(), k_tip_N_m), k_couple_N_m, normal_N,
+                               in_contact, mu, grid_points, presliding_m);
+}
+
+QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, const std::vector<double>& k_tip_N_m,
+                                       double k_couple_N_m, const std::vector<double>& normal_N,
+                                       const std::vector<std::uint8_t>& in_contact, double mu, int grid_points,
+                                       double presliding_m) {
   const int n = static_cast<int>(lattice.pins.size());
-  if (static_cast<int>(normal_N.size()) != n || static_cast<int>(in_contact.size()) != n) {
-    throw std::invalid_argument("SolveQuasiStaticShear: one normal load and contact flag per pin");
+  if (static_cast<int>(normal_N.size()) != n || static_cast<int>(in_contact.size()) != n ||
+      static_cast<int>(k_tip_N_m.size()) != n) {
+    throw std::invalid_argument("SolveQuasiStaticShear: one shear stiffness, normal load and contact flag per pin");
   }
-  Eigen::MatrixXd K = k_tip_N_m * Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd K = Eigen::VectorXd::Map(k_tip_N_m.data(), n).asDiagonal();
   for (const auto& e : lattice.neighbours) {
     K(e[0], e[0]) += k_couple_N_m;
     K(e[1], e[1]) += k_couple_N_m;
@@ -247,6 +256,14 @@ void CheckDomeSkin(const SkinConfig& skin) {
 }
 
 namespace {
+
+// Each pin's own shear stiffness (the clamped rim's outer ring carries its share).
+std::vector<double> TipStiffnesses(const PinLattice& lattice, const SkinMechanics& mech) {
+  std::vector<double> k;
+  k.reserve(lattice.pins.size());
+  for (const auto& pin : lattice.pins) k.push_back(mech.TipStiffness(pin.ring));
+  return k;
+}
 
 // What the dome check needs from the press: each pin's normal load and contact, its
 // distance from the axis in the plate plane, and the contact radius.
@@ -506,7 +523,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   // differ from it is the dynamics' and the soft contact's doing; where both miss the band
   // it is the lattice's mechanics.
   const QuasiStaticShear qs =
-      SolveQuasiStaticShear(lattice, mech.k_tip_N_m, mech.k_couple_N_m, press.normal_N, press.contact,
+      SolveQuasiStaticShear(lattice, TipStiffnesses(lattice, mech), mech.k_couple_N_m, press.normal_N, press.contact,
                             spec.contact.friction, 4000,
                             spec.sim.noslip == "exact" ? spec.contact.presliding_mm * 1e-3 : 0.0);
   JudgeExact(qs, press, band, out);

@@ -159,6 +159,12 @@ struct QuasiStaticShear {
 QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
                                        double mu, int grid_points, double presliding_m = 0.0);
+/// The same with each pin's own shear stiffness (SkinMechanics::TipStiffness: the outer ring
+/// of a clamped rim carries its share of the annulus).
+QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, const std::vector<double>& k_tip_N_m,
+                                       double k_couple_N_m, const std::vector<double>& normal_N,
+                                       const std::vector<std::uint8_t>& in_contact, double mu, int grid_points,
+                                       double presliding_m = 0.0);
 
 /// Throws InputError unless the skin is the membrane-coupled lattice the dome check needs.
 void CheckDomeSkin(const SkinConfig& skin);
