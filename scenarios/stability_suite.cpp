@@ -54,6 +54,12 @@ std::vector<StabilityCase> BuildCases() {
        {"skin.gel_modulus_kpa=10000"}},
       {"v1-skin-x100", "fingerprint-v1 with the skin 100x stiffer (membrane links x100)", "fingerprint-v1",
        {"skin.skin_modulus_mpa=100"}},
+      // A clamped rim on a thin, stiff skin: the annulus (E t) outgrows the bending coupling (E t^3)
+      // and the smooth shell's in-plane mode limits the step.
+      {"rim-thin-x100", "clamped rim, 0.1 mm skin 100x stiffer: the shell's in-plane mode omega x11", "",
+       {"skin.rim=clamped", "skin.thickness_mm=0.1", "skin.skin_modulus_mpa=100"}},
+      {"rim-thin-x100-auto-dt", "the same at the step --auto-timestep picks", "",
+       {"skin.rim=clamped", "skin.thickness_mm=0.1", "skin.skin_modulus_mpa=100"}, E::kHeld, true},
       // Object mass from 5 g to 5 kg (the skin holds ~3 N at mu = 1).
       {"mass-5g", "a 5 g object (held to the end of the contact)", "", {"object.mass_kg=0.005"}, E::kHeld},
       {"mass-1kg", "a 1 kg object (9.8 N against ~3.3 N of friction: not held)", "", {"object.mass_kg=1"},

@@ -101,6 +101,9 @@ TEST_F(CliTest, BadInputGetsOneLineAndExitCode2) {
       {"validate contact --set skin.gel_shear_modulus_kpa=0.1",
        "the continuum-regime dome needs a membrane coupling length of"},
       {"validate contact --skin smooth", "needs the membrane-coupled lattice"},
+      {"generate rail --set skin.rim=glued", "skin.rim = 'glued': must be one of free, clamped"},
+      {"generate rail --set skin.rim=clamped --set skin.rings=10",
+       "the pattern's edge (31.5 mm of arc) must lie inside the clamped rim"},
   };
   for (const auto& c : cases) {
     const bool gen = c.args.rfind("generate", 0) == 0 || c.args.rfind("bench", 0) == 0;
