@@ -31,9 +31,8 @@ RimAnchor RimAnchor::Of(const SkinConfig& skin, const PinLattice& lattice) {
     arc_sum += pin.polar_rad * R;
     ++count;
   }
-  const double step_m = (skin.Fingerprint() ? skin.ridge_spacing_mm : skin.pitch_mm) * 1e-3;
-  out.pattern_edge_m = arc_sum / count + 0.5 * step_m;
-  out.rim_m = 0.5 * std::numbers::pi * R;
+  out.pattern_edge_m = arc_sum / count + 0.5 * skin.RingStepMm() * 1e-3;
+  out.rim_m = skin.BaseArcMm() * 1e-3;
   if (out.pattern_edge_m >= out.rim_m) return out;  // the pattern reaches the rim: ValidateRules refuses it
   // The network's 2-D Young's modulus is E t; its shear modulus E t / (2 (1 + nu)).
   const double mu_t = skin.skin_modulus_mpa * 1e6 * skin.thickness_mm * 1e-3 / (2.0 * (1.0 + kMembranePoisson));

@@ -14,6 +14,9 @@ namespace tactip {
 namespace {
 constexpr double kSkinDensity = 1100.0;  // kg/m^3, silicone rubber
 constexpr double kSkinPoisson = 0.5;     // rubber is nearly incompressible
+
+// Two springs in series.
+double Series(double k1, double k2) { return 1.0 / (1.0 / k1 + 1.0 / k2); }
 }  // namespace
 
 double SkinConfig::OuterRadiusMm() const { return radius_mm + (Fingerprint() ? ridge_height_mm : 0.0); }
@@ -76,7 +79,7 @@ void SkinConfig::ValidateRules() const {
     FailRule(key, Fingerprint() ? pattern_radius_mm : rings,
              fmt::format("lattice reaches {:.2f} rad from the apex; it must stay within pi/2 * radius_mm "
                          "({:.1f} mm of arc)",
-                         alpha_max, 0.5 * std::numbers::pi * radius_mm));
+                         alpha_max, BaseArcMm()));
   }
   if (Fingerprint() && pattern_radius_mm < ridge_spacing_mm) {
     FailRule("skin.pattern_radius_mm", pattern_radius_mm, "must be >= skin.ridge_spacing_mm (at least one ring)");
@@ -91,12 +94,13 @@ void SkinConfig::ValidateRules() const {
   if (contact_radius_mm >= radius_mm) {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
   }
-  const double edge_mm = reach_mm + 0.5 * (Fingerprint() ? ridge_spacing_mm : pitch_mm);
-  if (rim == "clamped" && edge_mm >= 0.5 * std::numbers::pi * radius_mm) {
+  // The configured reach bounds the outermost ring, so this edge is never inside RimAnchor's.
+  const double edge_mm = reach_mm + 0.5 * RingStepMm();
+  if (rim == "clamped" && edge_mm >= BaseArcMm()) {
     FailRule("skin.rim", rim,
              fmt::format("the pattern's edge ({:.1f} mm of arc) must lie inside the clamped rim at the dome's base "
                          "({:.1f} mm)",
-                         edge_mm, 0.5 * std::numbers::pi * radius_mm));
+                         edge_mm, BaseArcMm()));
   }
   if (shell_damping == "gel" && coupling != "shell") {
     FailRule("skin.shell_damping", shell_damping,
@@ -264,8 +268,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   m.k_bend_N_m = D / (a * a);
   m.membrane_N_m = E_skin * t;
   // Per-pin shear DOFs: the contact point rides on the gel in series with the ridge.
-  const auto series = [](double k1, double k2) { return 1.0 / (1.0 / k1 + 1.0 / k2); };
-  m.k_tip_N_m = m.k_rock_N_m > 0.0 ? series(m.k_shear_N_m, m.k_rock_N_m) : m.k_shear_N_m;
+  m.k_tip_N_m = m.k_rock_N_m > 0.0 ? Series(m.k_shear_N_m, m.k_rock_N_m) : m.k_shear_N_m;
   // A triangular spring network with springs k has a 2-D Young's modulus 2k / sqrt 3.
   m.k_link_N_m = std::sqrt(3.0) / 2.0 * m.membrane_N_m;
   m.k_couple_N_m = m.k_rock_N_m > 0.0 ? 1.0 / (1.0 / m.k_link_N_m + 2.0 / m.k_rock_N_m) : m.k_link_N_m;
@@ -294,7 +297,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& latt
   m.rim_ring = rim.outer_ring;
   if (rim.outer_ring >= 0 && skin.coupling == "membrane") {
     const double share = rim.PerPinN_m();
-    m.k_rim_pin_N_m = m.k_rock_N_m > 0.0 ? 1.0 / (1.0 / share + 1.0 / m.k_rock_N_m) : share;
+    m.k_rim_pin_N_m = m.k_rock_N_m > 0.0 ? Series(share, m.k_rock_N_m) : share;
   }
   return m;
 }
@@ -378,7 +381,7 @@ void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
         .Set("name", plan.names.Part(std::string("skin_shear_") + axis))
         .Set("type", "slide")
         .Set("axis", std::string(axis) == "y" ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
-        .Set("stiffness", static_cast<double>(n_pins) * mech.k_shear_N_m + mech.k_rim_N_m)
+        .Set("stiffness", mech.ShellShearStiffness(n_pins))
         .Set("damping", mech.shell_damping_Ns_m);
   }
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -166,6 +167,10 @@ struct SkinConfig {
   double ContactRadiusMm() const;
   /// True for the fingerprint patterns.
   bool Fingerprint() const { return pattern != "smooth"; }
+  /// Radial step between pin rings along the dome: ridge_spacing_mm (fingerprint) or pitch_mm.
+  double RingStepMm() const { return Fingerprint() ? ridge_spacing_mm : pitch_mm; }
+  /// Arc length from the apex to the dome's base, where the skin is clamped: pi R / 2.
+  double BaseArcMm() const { return 0.5 * std::numbers::pi * radius_mm; }
   /// Cross-field rules (the lattice must fit on the hemisphere).
   void ValidateRules() const;
 };
@@ -316,6 +321,9 @@ struct SkinMechanics {
   /// Highest natural frequency of the pin lattice (rad/s): normal mode with every
   /// neighbour in antiphase, omega = sqrt((k_n + 12 k_b) / m).
   double StiffestOmega() const;
+  /// The smooth skin's shell against an in-plane translation: its n_pins gel columns in
+  /// parallel, plus the clamped rim.
+  double ShellShearStiffness(size_t n_pins) const { return static_cast<double>(n_pins) * k_shear_N_m + k_rim_N_m; }
   /// A pin's own shear stiffness (membrane or uncoupled lattice): k_tip, plus its share of the
   /// clamped rim on the outermost ring.
   double TipStiffness(int ring) const { return ring == rim_ring ? k_tip_N_m + k_rim_pin_N_m : k_tip_N_m; }

@@ -58,8 +58,7 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
   if (spec.skin.coupling == "shell") {
     // The shell's in-plane translation on the gel columns and, when clamped, the rim's annulus.
     StiffMode shell;
-    shell.omega = std::sqrt((static_cast<double>(lattice.size()) * mech.k_shear_N_m + mech.k_rim_N_m) /
-                            mech.shell_moving_mass_kg);
+    shell.omega = std::sqrt(mech.ShellShearStiffness(lattice.size()) / mech.shell_moving_mass_kg);
     shell.zeta = mech.shell_damping_Ns_m / (2.0 * mech.shell_moving_mass_kg * shell.omega);
     shell.name = "the smooth skin's in-plane shell mode (set by skin.gel_shear_modulus_kpa and, with skin.rim = "
                  "clamped, skin.skin_modulus_mpa and skin.thickness_mm)";
