@@ -1,9 +1,11 @@
 #include "scenarios/signatures/gross_signature.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "scenarios/run_signals.h"
@@ -34,6 +36,59 @@ double ContactLostAfterS(const RunRecord& run, const SensorRecord& sensor, size_
     if (!any) return run.time[f] - onset_s;
   }
   return kNaN;
+}
+
+// Pin i's mean image position over the frames [first, end) in which it is valid; nullopt if
+// it is valid in none of them.
+std::optional<std::array<double, 2>> MeanPinPositionPx(const SensorRecord& sensor, size_t first, size_t end,
+                                                       size_t i) {
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  double u = 0.0, v = 0.0;
+  int count = 0;
+  for (size_t f = first; f < end; ++f) {
+    if (sensor.valid[f * n + i] == 0) continue;
+    u += sensor.pos_px[(f * n + i) * 2];
+    v += sensor.pos_px[(f * n + i) * 2 + 1];
+    ++count;
+  }
+  if (count == 0) return std::nullopt;
+  return std::array<double, 2>{u / count, v / count};
+}
+
+// Whether both step windows around `onset_frame` lie in the recording.
+bool StepWindowsRecorded(const RunRecord& run, size_t onset_frame) {
+  return onset_frame >= kStepBeforeFrames && onset_frame + kStepAfterEndFrame <= run.frames();
+}
+
+// GrossSignature::step_px of the onset frame.
+double PatternStepPx(const RunRecord& run, const SensorRecord& sensor, size_t onset_frame) {
+  if (!StepWindowsRecorded(run, onset_frame)) return kNaN;
+  double du = 0.0, dv = 0.0;
+  int pins = 0;
+  for (size_t i = 0; i < static_cast<size_t>(sensor.n_pins); ++i) {
+    const auto before = MeanPinPositionPx(sensor, onset_frame - kStepBeforeFrames, onset_frame, i);
+    const auto after =
+        MeanPinPositionPx(sensor, onset_frame + kStepAfterFirstFrame, onset_frame + kStepAfterEndFrame, i);
+    if (!before || !after) continue;
+    du += (*after)[0] - (*before)[0];
+    dv += (*after)[1] - (*before)[1];
+    ++pins;
+  }
+  return pins == 0 ? kNaN : std::hypot(du / pins, dv / pins);
+}
+
+// GrossSignature::settled_w5_px of the onset frame.
+double SettledSpeedW5Px(const RunRecord& run, const SensorRecord& sensor, size_t onset_frame) {
+  if (!StepWindowsRecorded(run, onset_frame)) return kNaN;
+  double sum = 0.0;
+  int frames = 0;
+  for (size_t f = onset_frame + kStepAfterFirstFrame; f < onset_frame + kStepAfterEndFrame; ++f) {
+    const double s = MeanPinSpeedPx(sensor, f, kSmoothingFrames);
+    if (std::isnan(s)) continue;
+    sum += s;
+    ++frames;
+  }
+  return frames == 0 ? kNaN : sum / frames;
 }
 
 }  // namespace
@@ -81,6 +136,8 @@ std::optional<GrossSignature> MeasureGrossSignature(const RunRecord& run, const 
   g.colinear_onset = start < run.frames() ? ColinearFraction(sensor, start, pin_level) : kNaN;
   g.colinear_later = later < run.frames() ? ColinearFraction(sensor, later, pin_level) : kNaN;
   g.contact_lost_s = ContactLostAfterS(run, sensor, onset_frame, onset_s);
+  g.step_px = PatternStepPx(run, sensor, onset_frame);
+  g.settled_w5_px = SettledSpeedW5Px(run, sensor, onset_frame);
   return g;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The hardware's gross-slip signature of one run (real-sensor.md section 2): how long the
 // mean pin speed stays above the camera noise from the onset, its peak, how co-linear the
-// moving pins are at and after the onset, and when the object loses contact.
+// moving pins are at and after the onset, when the object loses contact, and how far the
+// pattern steps and whether it is still afterwards ("a step change, then flat").
 
 #include <optional>
 
@@ -18,6 +19,13 @@ constexpr int kColinearLaterFrames = 5;
 constexpr double kColinearHalfAngleDeg = 30.0;
 /// How long after the onset the spike peak is searched (s).
 constexpr double kSpikePeakSpanS = 0.3;
+
+/// Frames before the onset frame over which the loaded pattern's position is averaged.
+constexpr int kStepBeforeFrames = 10;
+/// Frames after the onset frame, [first, end), over which the released pattern's position
+/// (and its leftover speed) is averaged: after the hardware's ~20-frame spike.
+constexpr int kStepAfterFirstFrame = 20;
+constexpr int kStepAfterEndFrame = 30;
 
 /// Gross-slip figures of a run with a gross_slip_onset_s. A figure is NaN when its event
 /// did not happen (no frame with moving pins; contact never lost in the recording).
@@ -40,6 +48,14 @@ struct GrossSignature {
   /// Time of the first frame at or after the onset frame with no pin in contact, minus the
   /// onset time, s.
   double contact_lost_s = 0.0;
+  /// The pattern's step at gross slip: length of the pins' mean displacement from their mean
+  /// positions over the kStepBeforeFrames frames before the onset frame to their mean
+  /// positions over frames [onset + kStepAfterFirstFrame, onset + kStepAfterEndFrame), px
+  /// (pins valid in both windows); NaN when either window is not in the recording.
+  double step_px = 0.0;
+  /// Mean of the W5 mean pin speed over that later window, px/frame ("then flat" when it is
+  /// near noise.mean_speed_w5_px); NaN when the window is not in the recording.
+  double settled_w5_px = 0.0;
 };
 
 /// Measures the signature of sensor's recording of `run`, the noise over the still window

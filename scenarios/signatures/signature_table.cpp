@@ -51,7 +51,8 @@ std::string SummaryLine(const std::string& figure, const std::string& sim, const
 
 // The gross-slip figures of the runs that have them, one vector per figure.
 struct GrossColumns {
-  std::vector<double> noise, noise_w5, width, peak, peak_w5, colinear_onset, colinear_later, contact_lost;
+  std::vector<double> noise, noise_w5, width, peak, peak_w5, colinear_onset, colinear_later, contact_lost,
+      step, settled_w5;
 };
 
 // One row of the gross-slip table; fills the columns.
@@ -67,12 +68,14 @@ std::string GrossRow(const SignatureRun& r, GrossColumns& c) {
   c.colinear_onset.push_back(g.colinear_onset);
   c.colinear_later.push_back(g.colinear_later);
   c.contact_lost.push_back(g.contact_lost_s);
-  return fmt::format("{:>4} {:>6} {:>6} {:>8} {:>6} {:>6} {:>5} {:>6} {:>7} {:>7} {:>7} {:>7}\n", r.run,
+  c.step.push_back(g.step_px);
+  c.settled_w5.push_back(g.settled_w5_px);
+  return fmt::format("{:>4} {:>6} {:>6} {:>8} {:>6} {:>6} {:>5} {:>6} {:>7} {:>7} {:>7} {:>7} {:>6} {:>8}\n", r.run,
                      Num(r.speed_mm_s), Num(g.noise.mean_speed_px), Num(g.noise.mean_speed_w5_px),
                      Num(g.noise.Level()), std::isnan(width) ? kNotApplicable : std::to_string(g.spike_width_frames),
                      PassCell(g.spike_width_frames >= kAcceptedSpikeFrames), Num(g.spike_peak_px),
                      Num(g.spike_peak_w5_px), Num(g.colinear_onset), Num(g.colinear_later),
-                     Num(g.contact_lost_s, "{:.3f}"));
+                     Num(g.contact_lost_s, "{:.3f}"), Num(g.step_px), Num(g.settled_w5_px));
 }
 
 // The gross-slip per-run table and summary.
@@ -81,8 +84,9 @@ std::string GrossSection(const std::vector<SignatureRun>& runs, const Acceptance
   std::string out = fmt::format(
       "gross slip: {} of {} runs have an onset; noise over the {} s before the retraction, level = mean + {} std\n",
       width.runs, runs.size(), held_window_s, kNoiseSigmas);
-  out += fmt::format("{:>4} {:>6} {:>6} {:>8} {:>6} {:>6} {:>5} {:>6} {:>7} {:>7} {:>7} {:>7}\n", "run", "speed",
-                     "noise", "noise_w5", "level", "width", ">=15", "peak", "peak_w5", "colin_0", "colin_5", "lost_s");
+  out += fmt::format("{:>4} {:>6} {:>6} {:>8} {:>6} {:>6} {:>5} {:>6} {:>7} {:>7} {:>7} {:>7} {:>6} {:>8}\n", "run",
+                     "speed", "noise", "noise_w5", "level", "width", ">=15", "peak", "peak_w5", "colin_0", "colin_5",
+                     "lost_s", "step", "after_w5");
   GrossColumns c;
   for (const SignatureRun& r : runs) out += GrossRow(r, c);
   // Summary: each figure's spread beside the hardware's value and the acceptance.
@@ -97,6 +101,9 @@ std::string GrossSection(const std::vector<SignatureRun>& runs, const Acceptance
   out += SummaryLine(fmt::format("co-linear share {} frames later", kColinearLaterFrames), Spread(c.colinear_later),
                      "messy (elastic effects, contact loss)");
   out += SummaryLine("onset -> contact lost, s", Spread(c.contact_lost, "{:.3f}"), "~0.2");
+  out += SummaryLine("pattern step at gross slip, px", Spread(c.step), "a step change");
+  out += SummaryLine(fmt::format("W5 {}-{} frames after, px/frame", kStepAfterFirstFrame, kStepAfterEndFrame),
+                     Spread(c.settled_w5), "then flat (noise W5 ~0.1)");
   return out;
 }
 

@@ -99,6 +99,45 @@ TEST(GrossSignatureTest, AllPinsMovingTogetherAreCoLinearAndContactLossIsTimedFr
   EXPECT_NEAR(g->spike_peak_w5_px, 1.0, 0.2);
 }
 
+TEST(GrossSignatureTest, PatternStepIsTheSlideAndTheLaterWindowIsAsStillAsTheHeldOne) {
+  const RunRecord r = GrossRun();
+  const auto g = MeasureGrossSignature(r, r.sensors[0]);
+  ASSERT_TRUE(g.has_value());
+  // Every pin moved 17 px down between frames 90-99 and 120-129; the noise averages over
+  // 20 pins x 10 frames.
+  EXPECT_NEAR(g->step_px, 17.0, 0.1);
+  // Frames 120-129 are still: their W5 speed is the held window's noise.
+  EXPECT_NEAR(g->settled_w5_px, g->noise.mean_speed_w5_px, 0.03);
+}
+
+TEST(GrossSignatureTest, PinsStillMovingAfterTheSpikeAreNotFlatAndMissedPinsAreLeftOut) {
+  RunRecord r = StillRun(160, 20);
+  r.attrs["gross_slip_onset_s"] = 100 * kFrameS;
+  SensorRecord& s = r.sensors[0];
+  // Every pin moves 3 px right on frames 100-109 and 0.5 px/frame from frame 115 on.
+  for (int i = 0; i < 20; ++i) MovePin(s, i, 100, 110, 0.3, 0.0);
+  for (int i = 0; i < 20; ++i) MovePin(s, i, 115, 160, 0.5, 0.0);
+  // Pin 0 is missed before the onset: it has no loaded position and does not count.
+  for (int f = 90; f < 100; ++f) s.valid[static_cast<size_t>(f * 20)] = 0;
+  s.pos_px[90 * 20 * 2] = 0.0f;
+  const auto g = MeasureGrossSignature(r, s);
+  ASSERT_TRUE(g.has_value());
+  // Frames 120-129 sit 3 + 0.5 x (6..15) px right of frames 90-99: 8.25 px on average.
+  EXPECT_NEAR(g->step_px, 8.25, kSpeedTol * 10);
+  EXPECT_NEAR(g->settled_w5_px, 0.5, kSpeedTol);
+}
+
+TEST(GrossSignatureTest, StepNeedsBothWindowsInTheRecording) {
+  RunRecord r = StillRun(125, 4);
+  r.attrs["gross_slip_onset_s"] = 100 * kFrameS;
+  const auto g = MeasureGrossSignature(r, r.sensors[0]);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_TRUE(std::isnan(g->step_px));  // the recording ends at frame 124, before frame 129
+  EXPECT_TRUE(std::isnan(g->settled_w5_px));
+  const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
+  EXPECT_TRUE(SignatureCsv(runs).ends_with(",none,none\n")) << SignatureCsv(runs);
+}
+
 TEST(GrossSignatureTest, SpikeStartsAtTheNextFrameWhenTheOnsetFrameIsStillStatic) {
   RunRecord r = StillRun(160, 20);
   r.attrs["gross_slip_onset_s"] = 100 * kFrameS;
@@ -268,7 +307,7 @@ TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
   const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
   const std::string text = FormatSignatureReport(runs, {});
   EXPECT_NE(text.find("alarm pins slip/stuck/free      no alarm"), std::string::npos) << text;
-  EXPECT_NE(SignatureCsv(runs).find(",0.1,none,none,none\n"), std::string::npos) << SignatureCsv(runs);
+  EXPECT_NE(SignatureCsv(runs).find(",0.1,none,none,none,n/a,n/a\n"), std::string::npos) << SignatureCsv(runs);
   // How far from visible: 0.1 px/frame held, half the threshold.
   EXPECT_NEAR(s->sustained_excess_px, 0.1, kSpeedTol);
 }
@@ -364,14 +403,16 @@ TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
   const std::string gross_row = csv.substr(csv.find('\n') + 1, csv.find('\n', csv.find('\n') + 1) - csv.find('\n'));
   EXPECT_EQ(gross_row.substr(0, 15), "0,none,smooth,0") << csv;
   EXPECT_NE(gross_row.find(",17,1,"), std::string::npos) << csv;
-  EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n"), std::string::npos)
+  EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,16.99"), std::string::npos)
       << csv;
-  EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free\n"),
+  EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free,"
+                     "step_px,settled_w5_px\n"),
             std::string::npos)
       << csv;
   // The incipient run's excess (its four pins' steady 0.6 px/frame) and its alarm's pins,
   // the last columns, and the summary.
-  EXPECT_NE(csv.find(",E,E,n/a,0.6,4,0,0\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",E,E,n/a,0.6,4,0,0,n/a,n/a\n"), std::string::npos) << csv;
+  EXPECT_NE(text.find("pattern step at gross slip, px  17."), std::string::npos) << text;
   EXPECT_NE(text.find("alarm pins slip/stuck/free      4/0/0 of 4 in 1 runs (100 % slip)"), std::string::npos) << text;
   EXPECT_NE(text.find("sustained excess, px/frame      0.60 [0.60, 0.60] (1 of 1 runs)"), std::string::npos) << text;
 }
