@@ -77,8 +77,8 @@ double PatternStepPx(const RunRecord& run, const SensorRecord& sensor, size_t on
   return pins == 0 ? kNaN : std::hypot(du / pins, dv / pins);
 }
 
-// GrossSignature::settled_w5_px of the onset frame.
-double SettledSpeedW5Px(const RunRecord& run, const SensorRecord& sensor, size_t onset_frame) {
+// GrossSignature::after_w5_px of the onset frame.
+double SpeedW5AfterSpikePx(const RunRecord& run, const SensorRecord& sensor, size_t onset_frame) {
   if (!StepWindowsRecorded(run, onset_frame)) return kNaN;
   double sum = 0.0;
   int frames = 0;
@@ -137,7 +137,7 @@ std::optional<GrossSignature> MeasureGrossSignature(const RunRecord& run, const 
   g.colinear_later = later < run.frames() ? ColinearFraction(sensor, later, pin_level) : kNaN;
   g.contact_lost_s = ContactLostAfterS(run, sensor, onset_frame, onset_s);
   g.step_px = PatternStepPx(run, sensor, onset_frame);
-  g.settled_w5_px = SettledSpeedW5Px(run, sensor, onset_frame);
+  g.after_w5_px = SpeedW5AfterSpikePx(run, sensor, onset_frame);
   return g;
 }
 

@@ -55,7 +55,7 @@ struct GrossSignature {
   double step_px = 0.0;
   /// Mean of the W5 mean pin speed over that later window, px/frame ("then flat" when it is
   /// near noise.mean_speed_w5_px); NaN when the window is not in the recording.
-  double settled_w5_px = 0.0;
+  double after_w5_px = 0.0;
 };
 
 /// Measures the signature of sensor's recording of `run`, the noise over the still window

@@ -52,7 +52,7 @@ std::string SummaryLine(const std::string& figure, const std::string& sim, const
 // The gross-slip figures of the runs that have them, one vector per figure.
 struct GrossColumns {
   std::vector<double> noise, noise_w5, width, peak, peak_w5, colinear_onset, colinear_later, contact_lost,
-      step, settled_w5;
+      step, after_w5;
 };
 
 // One row of the gross-slip table; fills the columns.
@@ -69,13 +69,13 @@ std::string GrossRow(const SignatureRun& r, GrossColumns& c) {
   c.colinear_later.push_back(g.colinear_later);
   c.contact_lost.push_back(g.contact_lost_s);
   c.step.push_back(g.step_px);
-  c.settled_w5.push_back(g.settled_w5_px);
+  c.after_w5.push_back(g.after_w5_px);
   return fmt::format("{:>4} {:>6} {:>6} {:>8} {:>6} {:>6} {:>5} {:>6} {:>7} {:>7} {:>7} {:>7} {:>6} {:>8}\n", r.run,
                      Num(r.speed_mm_s), Num(g.noise.mean_speed_px), Num(g.noise.mean_speed_w5_px),
                      Num(g.noise.Level()), std::isnan(width) ? kNotApplicable : std::to_string(g.spike_width_frames),
                      PassCell(g.spike_width_frames >= kAcceptedSpikeFrames), Num(g.spike_peak_px),
                      Num(g.spike_peak_w5_px), Num(g.colinear_onset), Num(g.colinear_later),
-                     Num(g.contact_lost_s, "{:.3f}"), Num(g.step_px), Num(g.settled_w5_px));
+                     Num(g.contact_lost_s, "{:.3f}"), Num(g.step_px), Num(g.after_w5_px));
 }
 
 // The gross-slip per-run table and summary.
@@ -103,7 +103,7 @@ std::string GrossSection(const std::vector<SignatureRun>& runs, const Acceptance
   out += SummaryLine("onset -> contact lost, s", Spread(c.contact_lost, "{:.3f}"), "~0.2");
   out += SummaryLine("pattern step at gross slip, px", Spread(c.step), "a step change");
   out += SummaryLine(fmt::format("W5 {}-{} frames after, px/frame", kStepAfterFirstFrame, kStepAfterEndFrame),
-                     Spread(c.settled_w5), "then flat (noise W5 ~0.1)");
+                     Spread(c.after_w5), "then flat (noise W5 ~0.1)");
   return out;
 }
 

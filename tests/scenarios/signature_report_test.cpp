@@ -107,7 +107,7 @@ TEST(GrossSignatureTest, PatternStepIsTheSlideAndTheLaterWindowIsAsStillAsTheHel
   // 20 pins x 10 frames.
   EXPECT_NEAR(g->step_px, 17.0, 0.1);
   // Frames 120-129 are still: their W5 speed is the held window's noise.
-  EXPECT_NEAR(g->settled_w5_px, g->noise.mean_speed_w5_px, 0.03);
+  EXPECT_NEAR(g->after_w5_px, g->noise.mean_speed_w5_px, 0.03);
 }
 
 TEST(GrossSignatureTest, PinsStillMovingAfterTheSpikeAreNotFlatAndMissedPinsAreLeftOut) {
@@ -124,7 +124,7 @@ TEST(GrossSignatureTest, PinsStillMovingAfterTheSpikeAreNotFlatAndMissedPinsAreL
   ASSERT_TRUE(g.has_value());
   // Frames 120-129 sit 3 + 0.5 x (6..15) px right of frames 90-99: 8.25 px on average.
   EXPECT_NEAR(g->step_px, 8.25, kSpeedTol * 10);
-  EXPECT_NEAR(g->settled_w5_px, 0.5, kSpeedTol);
+  EXPECT_NEAR(g->after_w5_px, 0.5, kSpeedTol);
 }
 
 TEST(GrossSignatureTest, StepNeedsBothWindowsInTheRecording) {
@@ -133,7 +133,7 @@ TEST(GrossSignatureTest, StepNeedsBothWindowsInTheRecording) {
   const auto g = MeasureGrossSignature(r, r.sensors[0]);
   ASSERT_TRUE(g.has_value());
   EXPECT_TRUE(std::isnan(g->step_px));  // the recording ends at frame 124, before frame 129
-  EXPECT_TRUE(std::isnan(g->settled_w5_px));
+  EXPECT_TRUE(std::isnan(g->after_w5_px));
   const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
   EXPECT_TRUE(SignatureCsv(runs).ends_with(",none,none\n")) << SignatureCsv(runs);
 }
@@ -406,7 +406,7 @@ TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
   EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,16.99"), std::string::npos)
       << csv;
   EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free,"
-                     "step_px,settled_w5_px\n"),
+                     "step_px,after_w5_px\n"),
             std::string::npos)
       << csv;
   // The incipient run's excess (its four pins' steady 0.6 px/frame) and its alarm's pins,
