@@ -76,12 +76,15 @@ struct SkinConfig {
     v("gel_shear_modulus_kpa", gel_shear_modulus_kpa, "kPa",
       "Shear modulus G of the gel the skin slides on: each pin's shear column k_shear = G A_cell / h_gel (the "
       "smooth skin's shell carries all pins' columns in parallel). 0: gel_modulus_kpa / 3, the column's own "
-      "modulus taken as an incompressible solid. gel_modulus_kpa is a lumped normal stiffness fitted to force "
+      "modulus taken as an incompressible solid: the smooth skin's rigid shell, a lumped model whose gel columns "
+      "stand for all of its in-plane compliance. gel_modulus_kpa is a lumped normal stiffness fitted to force "
       "against depth (it carries the skin's tension and the confined gel too); a silicone gel's own shear modulus "
-      "can be several times lower. See README 'A softer gel in shear'.",
+      "can be several times lower: the fingerprint presets, whose membrane lattice resolves the skin, set 6.67 "
+      "(README 'The skin's materials').",
       Bounds::Closed(0.0, 10000.0));
     v("skin_modulus_mpa", skin_modulus_mpa, "MPa",
-      "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation).",
+      "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation; the fingerprint presets "
+      "set a fitted 0.4 MPa, README 'The skin's materials').",
       Bounds::Closed(kSkinModulusMinMpa, kSkinModulusMaxMpa));
     v("damping_ratio", damping_ratio, "",
       "Damping ratio of each pin's normal mode (gel viscosity); joint damping 2 zeta sqrt(k m), "
@@ -112,7 +115,7 @@ struct SkinConfig {
       Choices{"shell", "membrane", "none"});
     v("rim", rim, "",
       "The skin beyond the pin pattern. free: not modelled; the pattern's in-plane motion is held by the gel "
-      "alone. clamped: the skin rubber from the pattern's edge (outermost ring plus half a step) to the dome's "
+      "alone (the smooth skin's lumped shell). clamped (the fingerprint presets): the skin rubber from the pattern's edge (outermost ring plus half a step) to the dome's "
       "base (arc pi R / 2), where the skin is clamped to the sensor, is a flat annular membrane (E t, Poisson "
       "1/3 as the lattice's network) that pulls a translated pattern back with K = 2 pi mu t (1 + kappa) / "
       "(kappa ln(b/a) - (b^2 - a^2) / (kappa (a^2 + b^2))), kappa = (3 - nu) / (1 + nu): added to the shell's "
@@ -340,7 +343,9 @@ struct SkinMechanics {
 };
 
 /// The skin keys of the `--skin NAME` presets: "skin.key=value" overrides for smooth,
-/// fingerprint-v1 and fingerprint-v2 (throws InputError for another name).
+/// fingerprint-v1 and fingerprint-v2 (throws InputError for another name). The fingerprint
+/// presets carry the membrane lattice's resolved materials (a gel of 6.67 kPa in shear, a
+/// 0.4 MPa skin, the rim clamped); the smooth skin keeps the defaults.
 std::vector<std::string> SkinPreset(const std::string& name);
 
 /// Largest step at which a skin with per-pin shear DOFs is validated at mu = 1, s (see

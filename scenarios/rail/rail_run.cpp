@@ -366,12 +366,17 @@ void RailRun::TrackHealth(double t) {
   const bool held = t >= sched_.lift_end && std::isnan(sum_.gross_slip_onset_s);
   const bool retracting = t >= sched_.retract_start;
   const double creep = retracting ? sim_->BodyPos(im_.slider_body)[2] - sim_->SitePos(im_.sensors.front().pin_outer_site[0])[2] : kNaN;
-  // While held the sensor moves only along its normal (the retraction): a pin pushed
-  // quasi-statically moves at most that far, which the image shows at most gain-fold.
+  // While held the sensor moves only along its normal (the retraction) and the object only
+  // along the rail: a pin pushed quasi-statically, or carried by the object it sticks to,
+  // moves at most as far as the sensor moves against the object, which the image shows at
+  // most gain-fold.
   const double x = arm_.x_m;
+  const double rel_z = sim_->BodyPos(im_.slider_body)[2] - channels_.front().sensor.pose().origin[2];
   const double gain_px_m = channels_.front().sensor.image_gain_px_m();
-  const double quasi_static_px = std::isnan(prev_frame_x_) ? 0.0 : gain_px_m * std::abs(x - prev_frame_x_);
+  const double quasi_static_px =
+      std::isnan(prev_frame_x_) ? 0.0 : gain_px_m * std::hypot(x - prev_frame_x_, rel_z - prev_frame_rel_z_);
   prev_frame_x_ = x;
+  prev_frame_rel_z_ = rel_z;
   // The pins of all sensors, in sensor order.
   for (size_t k = 0; k < channels_.size(); ++k) {
     const TactileSensor& sensor = channels_[k].sensor;

@@ -145,6 +145,7 @@ class RailRun {
   int n_contact_ = 0, n_slip_ = 0;
   bool slipped_since_frame_ = false;  // some pin slipped at a step since the last frame
   double prev_frame_x_ = std::numeric_limits<double>::quiet_NaN();  // the arm's commanded normal position at the last frame
+  double prev_frame_rel_z_ = 0.0;  // the object's height relative to the first sensor at the last frame
 
   // Per frame: is the state physically possible (StateLimits)?
   StateLimits limits_;  // for the controller in charge

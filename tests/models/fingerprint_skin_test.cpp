@@ -168,7 +168,8 @@ TEST(FingerprintMechanicsTest, WiderRidgeSpacingGivesEachPinALargerGelCell) {
   EXPECT_NEAR(ma.cell_area_m2, 3e-3 * 2.0 * std::numbers::pi * 3e-3 / 6.0, 1e-15);
   EXPECT_NEAR(mb.k_shear_N_m / ma.k_shear_N_m, (4.5 / 3.0) * (4.5 / 3.0), 1e-12);
   EXPECT_NEAR(mb.k_normal_N_m / ma.k_normal_N_m, (4.5 / 3.0) * (4.5 / 3.0), 1e-12);
-  EXPECT_NEAR(ma.k_shear_N_m, ma.k_normal_N_m / 3.0, 1e-12);
+  // The gel column's shear and normal stiffness share its cell and depth: their ratio is G / E.
+  EXPECT_NEAR(ma.k_shear_N_m / ma.k_normal_N_m, a.GelShearModulusPa() / (a.gel_modulus_kpa * 1e3), 1e-12);
 }
 
 TEST(FingerprintMechanicsTest, RockingStiffnessFallsWithTheSquareOfTheLever) {
@@ -266,8 +267,10 @@ TEST(FingerprintMechanicsTest, StiffestShearModeCountsEveryNeighbourCoupling) {
   const SkinConfig v2 = PresetSkin("fingerprint-v2");
   const PinLattice lat = PinLattice::Build(v2);
   const SkinMechanics m = SkinMechanics::From(v2, lat);
+  // The stiffest pin: an outer-ring pin, which also carries its share of the clamped rim.
+  ASSERT_GT(m.k_rim_pin_N_m, 0.0) << "premise: the default rim is clamped";
   EXPECT_NEAR(m.StiffestShearOmega(),
-              std::sqrt((m.k_tip_N_m + 2.0 * m.max_degree * m.k_couple_N_m) / m.pin_mass_kg), 1e-9);
+              std::sqrt((m.TipStiffness(m.rim_ring) + 2.0 * m.max_degree * m.k_couple_N_m) / m.pin_mass_kg), 1e-9);
   SkinMechanics fewer = m;
   fewer.max_degree = m.max_degree - 1;
   EXPECT_LT(fewer.StiffestShearOmega(), m.StiffestShearOmega());
@@ -327,7 +330,7 @@ TEST_F(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormal
     }
     for (const auto& c : body->children()) {
       if (c.tag() != "joint" || c.Get("name") == SkinNames{}.PinJoint(i)) continue;
-      EXPECT_DOUBLE_EQ(std::stod(c.Get("stiffness")), m.k_tip_N_m) << c.Get("name");
+      EXPECT_DOUBLE_EQ(std::stod(c.Get("stiffness")), m.TipStiffness(lat.pins[i].ring)) << c.Get("name");
       EXPECT_DOUBLE_EQ(std::stod(c.Get("damping")), m.TipDamping(dt)) << c.Get("name");
     }
     moving_joints.insert(joints.begin(), joints.end());
@@ -411,6 +414,7 @@ TEST_F(FingerprintSkinPartTest, FingerprintRailSceneCompilesWithAFullShearLattic
 
 TEST(FingerprintConfigTest, PatternBeyondTheEquatorIsRejectedNamingTheKey) {
   SkinConfig s = PresetSkin("fingerprint-v2");
+  s.rim = "free";              // the lattice's own rule (a clamped rim needs room beyond it: RimAnchorTest)
   s.pattern_radius_mm = 31.0;  // < pi/2 * 20 = 31.42 mm
   EXPECT_NO_THROW(ValidateConfig(s));
   s.pattern_radius_mm = 32.0;

@@ -190,7 +190,11 @@ TEST_F(CliTest, SoftGelMaterialsFragmentChangesOnlyTheGelShearAndSkinModuli) {
     for (std::string la, lb; std::getline(da, la) && std::getline(db, lb);) {
       if (la != lb) changed.push_back(lb);
     }
-    EXPECT_EQ(changed, (std::vector<std::string>{"  gel_shear_modulus_kpa: 6.67", "  skin_modulus_mpa: 0.4"})) << name;
+    // The incipient scenario's default skin, the fingerprint-v2 preset, already carries them.
+    const auto expected = name == "rail"
+                              ? std::vector<std::string>{"  gel_shear_modulus_kpa: 6.67", "  skin_modulus_mpa: 0.4"}
+                              : std::vector<std::string>{};
+    EXPECT_EQ(changed, expected) << name;
   }
 }
 

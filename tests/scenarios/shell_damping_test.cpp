@@ -124,17 +124,37 @@ RailScenarioConfig Quiet(RailScenarioConfig c, const char* stimulus, double mass
   return c;
 }
 
+// The fastest any pin moves, px/frame, over the hold between the lift and the retraction
+// (the sensor still, the object held): the held object's ringing, seen by the camera.
+double HoldPinSpeedPx(const RunRecord& rec, double hold_s) {
+  const SensorRecord& s = rec.sensors[0];
+  const size_t n = static_cast<size_t>(s.n_pins);
+  const double end = rec.attrs.at("retract_start_s"), start = end - hold_s;
+  double fastest = 0.0;
+  for (size_t f = 1; f < rec.frames(); ++f) {
+    if (rec.time[f - 1] < start || rec.time[f] > end) continue;
+    for (size_t i = 0; i < n; ++i) {
+      const size_t a = 2 * ((f - 1) * n + i), b = 2 * (f * n + i);
+      fastest = std::max(fastest, static_cast<double>(std::hypot(s.pos_px[b] - s.pos_px[a], s.pos_px[b + 1] - s.pos_px[a + 1])));
+    }
+  }
+  return fastest;
+}
+
 TEST(ShellDampingTest, AHeavyHeldObjectRingsOnALightFixedDamperButNotOnTheGel) {
-  // The shell's ratio 0.1 with 0.4 kg held: a fixed damper gives the held mode 0.025.
+  // The shell's ratio 0.1 with 0.4 kg held: a fixed damper gives the held mode 0.025. Run
+  // health does not flag the ringing (the pins move with the object they stick to: physics,
+  // not a numerical defect), so the camera's pin speed over the hold is measured directly.
   RailScenarioConfig viscous = Gel(0.1);
   viscous.skin.shell_damping = "viscous";
-  RunRecord rec;
-  const RailRunSummary rings = RailScenario(Quiet(viscous, "curved80", 0.4, 4.5, 0.2)).Run(0, 3, rec);
-  EXPECT_FALSE(rings.health.ok);
-  EXPECT_GT(rings.health.pin_speed_px, 1.0);  // px/frame beyond the sensor's motion while held
-  const RailRunSummary gel = RailScenario(Quiet(Gel(0.1), "curved80", 0.4, 4.5, 0.2)).Run(0, 3, rec);
-  EXPECT_TRUE(gel.health.ok) << gel.health.reason;
-  EXPECT_LT(gel.health.pin_speed_px, 0.1);
+  RunRecord rings, still;
+  const RailScenarioConfig ringing = Quiet(viscous, "curved80", 0.4, 4.5, 0.2);
+  RailScenario(ringing).Run(0, 3, rings);
+  EXPECT_GT(HoldPinSpeedPx(rings, ringing.rail.hold_s), 1.0);
+  const RailScenarioConfig gel = Quiet(Gel(0.1), "curved80", 0.4, 4.5, 0.2);
+  const RailRunSummary held = RailScenario(gel).Run(0, 3, still);
+  EXPECT_TRUE(held.health.ok) << held.health.reason;
+  EXPECT_LT(HoldPinSpeedPx(still, gel.rail.hold_s), 0.1);
 }
 
 // Frames in a row, from the frame after the onset's (whose motion spans the onset), whose mean
