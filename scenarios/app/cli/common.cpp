@@ -36,8 +36,10 @@ void ConfigArgs::Add(CLI::App* c, bool with_scenario) {
   c->add_option("--speed-mm-s", speed_mm_s, "Shortcut for --set rail.retract_speed_mm_s=V.")->check(FiniteNumber());
   c->add_option("--stimulus", stimulus, "Shortcut for --set rail.stimulus=S (flat, acrylic, curved80, curved40, curved20).")
       ->check(NonEmpty("one of flat, acrylic, curved80, curved40, curved20"));
-  AddSkin(c, fmt::format("Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling "
-                         "and the variant's ridge/thickness/pin keys, and for a fingerprint skin its step "
+  AddSkin(c, fmt::format("Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (sets skin.pattern, skin.coupling, "
+                         "the variant's ridge/thickness/pin keys and the skin's materials (lumped for smooth, "
+                         "resolved for the fingerprint skins: skin.gel_shear_modulus_kpa, skin.skin_modulus_mpa, "
+                         "skin.rim), and for a fingerprint skin its step "
                          "sim.timestep_s: {} for v1, {} for v2; applied before --set).",
                          *SkinPresetTimestep("fingerprint-v1"), *SkinPresetTimestep("fingerprint-v2")));
 }
