@@ -40,7 +40,7 @@ std::string BuildContactRig(const ContactRigSpec& spec) {
       .Set("name", ContactRigNames::kPlateGeom)
       .Set("type", "box")
       .Set("pos", std::vector<double>{0.005, 0, 0})
-      .Set("size", std::vector<double>{0.005, 0.03, 0.03})
+      .Set("size", std::vector<double>{0.005, spec.plate_half_length_m, 0.03})
       .SetInt("contype", 2)
       .SetInt("conaffinity", 0)
       .SetInt("condim", 3)

@@ -31,6 +31,11 @@ struct ContactRigSpec {
   double max_depth_m = 3e-3;  ///< deepest indentation (for contact culling)
   double plate_mass_kg = 0.2; ///< moving mass of the plate carriage
   double servo_kp_N_m = 1e5;  ///< plate servo stiffness (both axes)
+  /// Half-length of the plate along the shear axis. A lattice soft in shear travels tens of
+  /// millimetres to gross slip (about mu P / (N k_tip)), and its slipped pins lag behind the
+  /// plate by up to that travel: the plate is long enough that none of them runs off its
+  /// trailing edge, which would drop its load and make the rest release early.
+  double plate_half_length_m = 0.2;
 };
 
 /// MJCF text of the rig.

@@ -51,6 +51,24 @@ TEST(BrushModelTest, ASoftGelsLongerRampIsShearedFasterAndStillMatches) {
   EXPECT_GE(c.slip_order_correlation, kSlipOrder);
 }
 
+// Over the fingerprint presets' soft gel the uncoupled v1 pins travel tens of millimetres to
+// gross slip, and a slipped pin lags behind the plate by up to that travel. The plate must
+// stay under every one of them: on the former 60 mm plate the trailing edge passed the
+// slipped pins, which dropped their load, and Q stopped at 0.73 mu P.
+TEST(BrushModelTest, PlateStaysUnderEverySlippedPinOverALongTravel) {
+  BrushCheckOptions o;
+  const RailScenarioConfig cfg = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v1"));
+  o.rig.sim = cfg.sim;
+  o.rig.skin = cfg.skin;
+  o.rig.contact = cfg.contact;
+  const BrushCheck c = RunBrushCheck(o);
+  ASSERT_FALSE(c.samples.empty());
+  ASSERT_GT(c.samples.back().u_m, 0.03) << "premise: the ramp travels beyond the former plate's half-length";
+  EXPECT_EQ(c.samples.back().contacting, c.pins_in_contact);
+  EXPECT_EQ(c.samples.back().slipping, c.pins_in_contact);
+  EXPECT_NEAR(c.samples.back().q_N, c.mu_P_N, kLoadTolerance * c.mu_P_N);
+}
+
 // The membrane-coupled fingerprint-v2 lattice under rising tangential load (physics.md:
 // gross slip at Q = mu P; the stick region shrinks from the outside in).
 TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
@@ -315,7 +333,7 @@ TEST(BrushModelTest, SpearmanHandlesTiesAndDirection) {
 }
 
 // `validate contact --skin S` runs the brush check on S's lattice too, with its tip
-// stiffness (gel column in series with the ridge: v1 11 N/m, not the gel's 27.9), and the
+// stiffness (gel column in series with the ridge: v1 3.49 N/m, not the gel's 5.59), and the
 // slip order is judged on the sample grid (v1's rings of equal load tie). A v1 dome cut to
 // its first ring keeps the run short.
 class ValidateContactCliTest : public testing::CliFolderTest {};
