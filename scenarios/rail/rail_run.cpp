@@ -320,11 +320,15 @@ void RailRun::TrackIncipient(double t) {
   if (partial && std::isnan(sum_.incipient_onset_s)) sum_.incipient_onset_s = t;
 }
 
+double RailRun::ObjectHeightOverSensorM() const {
+  return sim_->BodyPos(im_.slider_body)[2] - channels_.front().sensor.pose().origin[2];
+}
+
 void RailRun::TrackEvents(double t, double tf) {
   // An object the skin cannot lift is left behind during the lift (its contact may be lost
   // before every pin is seen sliding): the run ends, not held.
   if (t >= sched_.lift_start && t < sched_.retract_start && std::isnan(sum_.gross_slip_onset_s)) {
-    const double rel = sim_->BodyPos(im_.slider_body)[2] - channels_.front().sensor.pose().origin[2];
+    const double rel = ObjectHeightOverSensorM();
     if (std::isnan(lift_rel_ref_)) lift_rel_ref_ = rel;
     if (lift_rel_ref_ - rel > kOffDropM && !ending_) {
       left_behind_ = true;
@@ -339,7 +343,7 @@ void RailRun::TrackEvents(double t, double tf) {
   if (t < sched_.retract_start && std::isnan(sum_.gross_slip_onset_s)) return;
   // Object drop relative to the sensor, and sliding relative to the centre pin.
   const double obj_z = sim_->BodyPos(im_.slider_body)[2];
-  const double rel = obj_z - channels_.front().sensor.pose().origin[2];
+  const double rel = ObjectHeightOverSensorM();
   const double creep = obj_z - sim_->SitePos(im_.sensors.front().pin_outer_site[0])[2];
   if (std::isnan(rel_ref_)) {
     rel_ref_ = rel;
@@ -371,7 +375,7 @@ void RailRun::TrackHealth(double t) {
   // moves at most as far as the sensor moves against the object, which the image shows at
   // most gain-fold.
   const double x = arm_.x_m;
-  const double rel_z = sim_->BodyPos(im_.slider_body)[2] - channels_.front().sensor.pose().origin[2];
+  const double rel_z = ObjectHeightOverSensorM();
   const double gain_px_m = channels_.front().sensor.image_gain_px_m();
   const double quasi_static_px =
       std::isnan(prev_frame_x_) ? 0.0 : gain_px_m * std::hypot(x - prev_frame_x_, rel_z - prev_frame_rel_z_);

@@ -115,6 +115,8 @@ class RailRun {
   void TrackIncipient(double t);
   void TrackEvents(double t, double tf);
   void TrackHealth(double t);
+  /// The object's height along the rail relative to the first sensor, m.
+  double ObjectHeightOverSensorM() const;
   void CheckPlausible(double t) const;
   void RecordControls();
 
