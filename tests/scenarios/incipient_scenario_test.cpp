@@ -244,9 +244,9 @@ TEST_F(IncipientScenarioTest, SlipMemoryMakesTheOnsetsConvergeAsTheStepHalves) {
   EXPECT_LE(fine.health.flicker_max, 3) << fine.health.reason;
   EXPECT_EQ(fine.health.reason.find(';'), std::string::npos) << fine.health.reason;
   if (!fine.health.ok) EXPECT_NE(fine.health.reason.find("flickered"), std::string::npos) << fine.health.reason;
-  // Measured with the preset's soft gel and clamped rim: 17.162 s at 0.5 ms, 17.177 s at 0.25 ms,
-  // 17.185 s at 0.125 ms - first order, ~30 ms from the limit at the default step (README,
-  // "Accuracy"); the incipient onset at 13.450 s at all three.
+  // Measured with the preset's soft gel and clamped rim (seed 1): 17.163 s at 0.5 ms, 17.175 s
+  // at 0.25 and 0.125 ms; `tactip accuracy incipient` puts the default 21.8 ms from its
+  // 0.125 ms reference (README, "Accuracy"); the incipient onset at 13.450 s at all three.
   EXPECT_NEAR(coarse.gross_slip_onset_s, fine.gross_slip_onset_s, 0.02);
   EXPECT_NEAR(coarse.incipient_onset_s, fine.incipient_onset_s, 0.011);
 }
