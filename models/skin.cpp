@@ -119,10 +119,6 @@ void SkinConfig::ValidateRules() const {
                          "({:.1f} mm)",
                          edge_mm, BaseArcMm()));
   }
-  if (shell_damping == "gel" && coupling != "shell") {
-    FailRule("skin.shell_damping", shell_damping,
-             "gel damps the shell skin's in-plane mode: needs skin.coupling = shell");
-  }
 }
 
 namespace {
@@ -296,7 +292,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   m.pin_damping_Ns_m = 2.0 * skin.damping_ratio * std::sqrt(m.k_normal_N_m * m.pin_mass_kg);
   const double n = static_cast<double>(n_pins);
   m.shell_moving_mass_kg = m.shell_mass_kg + n * m.pin_mass_kg;
-  m.shell_damping_Ns_m = 2.0 * skin.shear_damping_ratio * std::sqrt(n * m.k_shear_N_m * m.shell_moving_mass_kg);
+  m.shell_damping_Ns_m = 2.0 * skin.ShellDampingRatio() * std::sqrt(n * m.k_shear_N_m * m.shell_moving_mass_kg);
   m.tip_damping_Ns_m = 2.0 * skin.shear_damping_ratio * std::sqrt(m.k_tip_N_m * m.pin_mass_kg);
   return m;
 }

@@ -83,6 +83,13 @@ double ShearDofValidatedTimestep(const SkinConfig& skin, const ContactConfig& co
   return kShearDofValidatedStepS / std::max(1.0, contact.friction);
 }
 
+double LightShellValidatedTimestep(const SkinConfig& skin) {
+  if (skin.coupling != "shell" || skin.ShellDampingRatio() >= kLightShellDampingRatio) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return kLightShellValidatedStepS;
+}
+
 StiffMode RailStiffestMode(const RailSceneSpec& spec) {
   const std::vector<StiffMode> modes = RailModes(spec);
   return *std::min_element(modes.begin(), modes.end(),

@@ -125,6 +125,16 @@ void CheckTimestep(const RailScenarioConfig& c) {
                          "{} s: at larger steps its slip events create energy; {}",
                          c.skin.coupling, c.contact.friction, FormatAtMost(validated), advice));
   }
+  const double light = LightShellValidatedTimestep(c.skin);
+  if (c.sim.timestep_s > light * (1.0 + 1e-9)) {
+    const std::string ratio = c.skin.shell_damping == "gel" ? "skin.gel_loss_tangent / 2" : "skin.shear_damping_ratio";
+    FailRule("sim.timestep_s", c.sim.timestep_s,
+             fmt::format("the shell skin damped at a ratio of {:.3g} ({}; below {}) is validated up to {} s: at "
+                         "larger steps the released shell's ringing makes the sliding contacts chatter; use "
+                         "sim.timestep_s <= {}",
+                         c.skin.ShellDampingRatio(), ratio, kLightShellDampingRatio, FormatAtMost(light),
+                         FormatAtMost(std::min(safe, light))));
+  }
 }
 
 }  // namespace
@@ -167,6 +177,7 @@ TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {
   const std::pair<double, std::string> bounds[] = {
       {stable.timestep_s, "stability"},
       {ShearDofValidatedTimestep(cfg.skin, cfg.contact), "the skin's per-pin shear DOFs (validated step)"},
+      {LightShellValidatedTimestep(cfg.skin), "the lightly damped shell skin (validated step)"},
       {cfg.sim.timestep_s, "accuracy (the configured sim.timestep_s)"},
       {0.5 * cfg.contact.timeconst_s, "the contact (contact.timeconst_s / 2)"},
       {frame_s, "one camera frame (sensor.frame_rate_hz)"},

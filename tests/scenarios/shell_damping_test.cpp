@@ -1,7 +1,6 @@
-// skin.shell_damping = gel: the shell skin's in-plane damper follows the mass it carries, so
-// the held object's mode and the released shell's mode both have the configured damping
-// ratio (a gel with a constant loss tangent), where a fixed damper leaves the held object
-// ringing.
+// skin.shell_damping = gel: the shell skin's in-plane damper follows the mass it carries, so the
+// held object's mode and the released shell's mode both have the damping ratio of the gel's loss
+// tangent (tan delta / 2), where a fixed damper leaves the held object ringing.
 
 #include "scenarios/rail/shell_damping.h"
 
@@ -21,11 +20,44 @@
 namespace tactip {
 namespace {
 
+// A gel shell damped at `ratio` (loss tangent 2 x ratio) at its validated step; a viscous one
+// at the same ratio.
 RailScenarioConfig Gel(double ratio) {
   RailScenarioConfig c;
   c.skin.shell_damping = "gel";
-  c.skin.shear_damping_ratio = ratio;
+  c.skin.gel_loss_tangent = 2.0 * ratio;
+  c.sim.timestep_s = kLightShellValidatedStepS;
   return c;
+}
+RailScenarioConfig Viscous(double ratio) {
+  RailScenarioConfig c;
+  c.skin.shell_damping = "viscous";
+  c.skin.shear_damping_ratio = ratio;
+  c.sim.timestep_s = kLightShellValidatedStepS;
+  return c;
+}
+
+TEST(ShellDampingTest, TheGelsRatioIsHalfItsLossTangentAndALightShellIsRefusedAboveItsValidatedStep) {
+  EXPECT_DOUBLE_EQ(Gel(0.08).skin.ShellDampingRatio(), 0.08);
+  EXPECT_DOUBLE_EQ(Viscous(4.0).skin.ShellDampingRatio(), 4.0);
+  EXPECT_DOUBLE_EQ(RailScenarioConfig{}.skin.ShellDampingRatio(), 4.0);  // the default: viscous
+  Gel(0.08).ValidateRules();
+  RailScenarioConfig coarse = Gel(0.08);
+  coarse.sim.timestep_s = 0.002;
+  try {
+    coarse.ValidateRules();
+    FAIL() << "the gel shell at 2 ms was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "sim.timestep_s = 0.002: the shell skin damped at a ratio of 0.08 (skin.gel_loss_tangent / 2; below 0.5) "
+              "is validated up to 0.001 s: at larger steps the released shell's ringing makes the sliding contacts "
+              "chatter; use sim.timestep_s <= 0.001");
+  }
+  // A fixed damper as light is refused alike; from a ratio of 0.5 on the default step is fine.
+  RailScenarioConfig fixed = Viscous(0.3), firm = Viscous(0.5);
+  fixed.sim.timestep_s = firm.sim.timestep_s = 0.002;
+  EXPECT_THROW(fixed.ValidateRules(), InputError);
+  firm.ValidateRules();
 }
 
 // Damping ratio of the shell's in-plane mode carrying `mass_kg` with damper `c`.
@@ -87,9 +119,8 @@ TEST(ShellDampingTest, TwoSensorsWithStuckContactsShareTheObject) {
   EXPECT_NEAR(Ratio(cfg, n, model.DofDamping(right), shell), 0.1, 1e-6);
 }
 
-TEST(ShellDampingTest, AViscousShellKeepsItsFixedDamperAndAMembraneSkinRefusesGel) {
-  RailScenarioConfig viscous = Gel(0.1);
-  viscous.skin.shell_damping = "viscous";
+TEST(ShellDampingTest, AViscousShellKeepsItsFixedDamperAndAMembraneSkinIgnoresTheGel) {
+  const RailScenarioConfig viscous = Viscous(0.1);
   const RailSceneIds ids(viscous, SceneOptions{});
   CompiledModel model = ids.model->Copy();
   ShellDamping damping(viscous, model, ids.scene.n_pins);
@@ -99,15 +130,18 @@ TEST(ShellDampingTest, AViscousShellKeepsItsFixedDamperAndAMembraneSkinRefusesGe
   damping.Update({1.0});
   EXPECT_EQ(model.DofDamping(dof), before);
 
-  RailScenarioConfig membrane = Gel(0.1);
-  membrane.skin.coupling = "membrane";
-  try {
-    membrane.skin.ValidateRules();
-    FAIL() << "gel damping on a membrane skin was accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "skin.shell_damping = 'gel': gel damps the shell skin's in-plane mode: needs skin.coupling = shell");
+  // A lattice damps each pin by shear_damping_ratio, whatever the shell's damper.
+  RailScenarioConfig gel_lattice = Gel(0.1), viscous_lattice = Viscous(0.1);
+  for (RailScenarioConfig* c : {&gel_lattice, &viscous_lattice}) {
+    c->skin.coupling = "membrane";
+    c->skin.shear_damping_ratio = 4.0;
+    c->skin.ValidateRules();
   }
+  const SkinMechanics a = SkinMechanics::From(gel_lattice.skin, 127), b = SkinMechanics::From(viscous_lattice.skin, 127);
+  EXPECT_DOUBLE_EQ(a.tip_damping_Ns_m, b.tip_damping_Ns_m);
+  const RailSceneIds lattice(gel_lattice, SceneOptions{});
+  CompiledModel lattice_model = lattice.model->Copy();
+  EXPECT_FALSE(ShellDamping(gel_lattice, lattice_model, lattice.scene.n_pins).active());
 }
 
 // Noise-free rail runs; `lift_mm` 50 lifts the plate's edge above the contact, so that the
@@ -145,8 +179,7 @@ TEST(ShellDampingTest, AHeavyHeldObjectRingsOnALightFixedDamperButNotOnTheGel) {
   // The shell's ratio 0.1 with 0.4 kg held: a fixed damper gives the held mode 0.025. Run
   // health does not flag the ringing (the pins move with the object they stick to: physics,
   // not a numerical defect), so the camera's pin speed over the hold is measured directly.
-  RailScenarioConfig viscous = Gel(0.1);
-  viscous.skin.shell_damping = "viscous";
+  const RailScenarioConfig viscous = Viscous(0.1);
   RunRecord rings, still;
   const RailScenarioConfig ringing = Quiet(viscous, "curved80", 0.4, 4.5, 0.2);
   RailScenario(ringing).Run(0, 3, rings);
@@ -187,19 +220,23 @@ Spike SpikeOf(const RunRecord& rec, double onset_s, double level_px) {
   return spike;
 }
 
-TEST(ShellDampingTest, ReleasedGelShellKeepsThePinsMovingUntilContactIsLost) {
+TEST(ShellDampingTest, ReleasedGelShellKeepsThePinsMovingLongerThanAViscousOne) {
+  // Measured at the gel's validated step (1 ms): 6 of the 12 frames to contact loss above the
+  // noise level, against 2 of 11 for the viscous shell. Not until contact is lost: at 2 ms the
+  // chattering sliding contacts had filled every frame (README 'Slip signatures').
   // 0.57 px/frame: the level the default camera noise puts on the mean pin speed (README).
   constexpr double kNoiseLevelPx = 0.57;
   RunRecord viscous_rec, gel_rec;
   const RailRunSummary viscous =
-      RailScenario(Quiet(RailScenarioConfig{}, "flat", 0.1, 3.0, 1.0, 50.0)).Run(0, 3, viscous_rec);
+      RailScenario(Quiet(Viscous(4.0), "flat", 0.1, 3.0, 1.0, 50.0)).Run(0, 3, viscous_rec);
   const RailRunSummary gel = RailScenario(Quiet(Gel(0.05), "flat", 0.1, 3.0, 1.0, 50.0)).Run(0, 3, gel_rec);
   ASSERT_TRUE(viscous.health.ok && gel.health.ok) << viscous.health.reason << gel.health.reason;
   ASSERT_FALSE(std::isnan(viscous.gross_slip_onset_s) || std::isnan(gel.gross_slip_onset_s));
   const Spike overdamped = SpikeOf(viscous_rec, viscous.gross_slip_onset_s, kNoiseLevelPx);
   const Spike ringing = SpikeOf(gel_rec, gel.gross_slip_onset_s, kNoiseLevelPx);
   ASSERT_GT(ringing.to_contact_loss, 8);
-  EXPECT_GE(ringing.above, ringing.to_contact_loss - 2);
+  EXPECT_GE(ringing.above, 2 * overdamped.above + 1);
+  EXPECT_GE(ringing.above, ringing.to_contact_loss / 3);
   EXPECT_LT(overdamped.above, overdamped.to_contact_loss / 2);
 }
 
