@@ -49,6 +49,12 @@ void RunRecorder::Frame(double time_s, const std::vector<const SensorReading*>& 
   AppendAll(rec_.actions.controls, controls);
 }
 
+void RunRecorder::LabelGrossFrom(size_t first_frame) {
+  for (SensorRecord& s : rec_.sensors) {
+    for (size_t f = first_frame; f < s.gross_slip.size(); ++f) s.gross_slip[f] = 1;
+  }
+}
+
 void RunRecorder::Images(size_t sensor, const ImageReading& r, int width, int height) {
   if (sensor >= rec_.sensors.size()) {
     throw std::logic_error("run " + std::to_string(rec_.index) + ": images of sensor " + std::to_string(sensor) +

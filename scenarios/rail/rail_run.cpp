@@ -243,14 +243,28 @@ void RailRun::ReadLabels() {
     n_slip_ += labels.n_slip;
     if (labels.n_contact > 0 && !labels.gross_slip) every_contact_slides = false;
   }
-  const bool all_slide = n_contact_ > 0 && every_contact_slides;
+  all_slide_ = n_contact_ > 0 && every_contact_slides;
   const double obj_speed = std::abs(sim_->Qvel(im_.slide_dof) - sim_->Qvel(im_.arm_z_dof));
-  gross_ = all_slide && obj_speed > c_.labels.slip_speed_m_s ? 1 : 0;
+  gross_ = all_slide_ && obj_speed > c_.labels.slip_speed_m_s ? 1 : 0;
 }
 
 void RailRun::TrackOnset(double t, bool seek_onset) {
-  // Gross onset: first gross-slip step once the object is held.
-  if (seek_onset && gross_) sum_.gross_slip_onset_s = t;
+  // Gross onset, once the object is held: the first step of the uninterrupted run of steps in
+  // which every contacting pin slides that brings the object into motion. A released shell
+  // that rings (skin.shell_damping = gel) springs back under the still object for a step
+  // before the object follows; those steps and their frames are gross slip too.
+  if (!seek_onset) return;
+  if (!all_slide_) {
+    all_slide_since_ = std::nan("");
+    return;
+  }
+  if (std::isnan(all_slide_since_)) {
+    all_slide_since_ = t;
+    all_slide_frame_ = frame_;
+  }
+  if (!gross_) return;
+  sum_.gross_slip_onset_s = all_slide_since_;
+  recorder_->LabelGrossFrom(static_cast<size_t>(all_slide_frame_));
 }
 
 void RailRun::TrackPrediction(double t) {

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -144,6 +145,9 @@ class RailRun {
   // Per step: the holding force, the gross-slip label, the pins of all sensors in contact and slipping.
   double holding_N_ = 0.0;  // what the contacts can hold along the rail: sum of mu_s,i N_i + N_i n_i.up
   std::uint8_t gross_ = 0;
+  bool all_slide_ = false;                      // every contacting pin of every sensor slides
+  double all_slide_since_ = std::nan("");       // first step of the current uninterrupted all_slide_ run
+  long long all_slide_frame_ = 0;               // the first frame recorded at or after that step
   int n_contact_ = 0, n_slip_ = 0;
   bool slipped_since_frame_ = false;  // some pin slipped at a step since the last frame
   double prev_frame_x_ = std::numeric_limits<double>::quiet_NaN();  // the arm's commanded normal position at the last frame

@@ -126,6 +126,43 @@ INSTANTIATE_TEST_SUITE_P(EveryStimulus, SceneHealthTest,
                          ::testing::Values(Scene{"flat", 0.05, 3.0}, Scene{"curved80", 0.4, 4.5},
                                            Scene{"curved40", 0.2, 3.0}, Scene{"curved20", 0.1, 3.0}));
 
+TEST(SceneHealthTest, TheSkinLettingGoUnderTheStillObjectIsGrossSlipFromThatStep) {
+  // A small skin on the acrylic rig retracted fast (the layout-1 fixture's scene): the skin
+  // lets go a step (2 ms) before the object follows - every contacting pin slides, the object
+  // not yet moving - and a camera frame falls on that step. It is gross slip: the onset is
+  // dated back to it, so no frame before the onset shows a slipping pin and that frame carries
+  // the label (before: onset 3.252 s, the frame at 3.250 s all pins slipping, labelled static).
+  RailScenarioConfig c;
+  c.skin.marker_model = "pins";
+  c.sim.free_sliding_speed_mm_s = 0.0;
+  c.rail.stimulus = "acrylic";
+  c.skin.rings = 2;
+  c.sensor.frame_rate_hz = 20.0;
+  c.rail.lift_mm = 5.0;
+  c.rail.hold_s = 0.1;
+  c.rail.settle_s = 0.1;
+  c.rail.retract_speed_mm_s = 5.0;
+  c.rail.post_fall_s = 0.1;
+  RunRecord rec;
+  const RailRunSummary s = RailScenario(c).Run(0, 5, rec);
+  ASSERT_FALSE(std::isnan(s.gross_slip_onset_s));
+  EXPECT_NEAR(s.gross_slip_onset_s, 3.250, 1e-6);
+  const SensorRecord& sensor = rec.sensors[0];
+  const size_t N = static_cast<size_t>(sensor.n_pins);
+  size_t onset_frame = rec.frames();
+  for (size_t f = 0; f < rec.frames() && onset_frame == rec.frames(); ++f) {
+    if (rec.time[f] >= s.gross_slip_onset_s - 1e-9) onset_frame = f;
+  }
+  ASSERT_LT(onset_frame, rec.frames());
+  EXPECT_NEAR(rec.time[onset_frame], s.gross_slip_onset_s, 1e-9);  // a frame on the onset's step
+  EXPECT_EQ(sensor.gross_slip[onset_frame], 1);
+  for (size_t f = 0; f < onset_frame; ++f) {
+    EXPECT_EQ(sensor.gross_slip[f], 0) << rec.time[f];
+    if (rec.time[f] < s.retract_start_s) continue;
+    for (size_t i = 0; i < N; ++i) ASSERT_EQ(sensor.pin_slip[f * N + i], 0) << "pin " << i << " at " << rec.time[f];
+  }
+}
+
 TEST(SceneHealthTest, ChatteringContactsAreFlaggedNotWrittenAsGoodData) {
   // MuJoCo's own noslip with a hard touch-down (the stability check off, or it is refused).
   RailScenarioConfig c = Quiet(Scene{"curved40", 0.1, 3.0});
