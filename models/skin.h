@@ -100,15 +100,15 @@ struct SkinConfig {
       "shear_damping_ratio and ignore this). viscous: one fixed damper giving the shell alone "
       "shear_damping_ratio. gel: a gel with a constant loss tangent, gel_loss_tangent, so every mode the shell "
       "forms has a damping ratio of half of it: the damper along the rail follows the mass the shell carries - "
-      "its own, plus the held object's share while its contacts stick (rail and incipient scenarios). Released "
-      "shear then rings until contact is lost, the hardware's ~20-frame slip spike. gel is validated up to "
-      "sim.timestep_s = 0.001 at a ratio below 0.5 (README 'The pin-lattice skin').",
+      "its own, plus the held object's share while its contacts stick (rail and incipient scenarios); released "
+      "shear rings on after gross slip. A shell damped below a ratio of 0.5 is validated up to sim.timestep_s = "
+      "0.001 (README 'The pin-lattice skin').",
       Choices{"viscous", "gel"});
     v("gel_loss_tangent", gel_loss_tangent, "",
       "Loss tangent tan(delta) = G''/G' of the gel's shear modulus (shell_damping = gel): the shell's in-plane "
       "modes are damped at a ratio tan(delta) / 2. Soft silicone gels have 0.05-0.3 at 1-100 Hz; 0.16 (ratio "
-      "0.08) is the value in that range at which the smooth skin's gross-slip spike lasts ~20 frames (README "
-      "'Slip signatures against the hardware').",
+      "0.08) lies mid-range (README 'Slip signatures against the hardware' gives the gross-slip spike it "
+      "makes).",
       Bounds::Closed(0.01, 2.0));
     v("contact_radius_mm", contact_radius_mm, "mm",
       "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",

@@ -167,6 +167,16 @@ TEST(AutoTimestepTest, ContactTimeConstantAndFrameBoundTheStep) {
   EXPECT_DOUBLE_EQ(t.timestep_s, 0.0025);
 }
 
+TEST(AutoTimestepTest, ALightlyDampedShellGetsItsValidatedStep) {
+  RailScenarioConfig c;
+  c.skin.shell_damping = "gel";
+  const TimestepChoice t = ChooseTimestep(c);
+  EXPECT_NE(t.binding.find("lightly damped shell"), std::string::npos) << t.binding;
+  EXPECT_DOUBLE_EQ(t.timestep_s, kLightShellValidatedStepS);
+  c.skin.gel_loss_tangent = 1.0;  // a ratio of 0.5: not light
+  EXPECT_DOUBLE_EQ(ChooseTimestep(c).timestep_s, 0.002);
+}
+
 TEST(AutoTimestepTest, MembraneSkinKeepsItsPhysicalDamping) {
   // fingerprint-v2: its stiff shear mode sets the step at which the model need not raise
   // the lattice's damping. The preset's 0.5 ms is below it, so the damping stays physical.
