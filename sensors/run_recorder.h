@@ -34,14 +34,14 @@ class RunRecorder {
   void Frame(double time_s, const std::vector<const SensorReading*>& readings, std::uint8_t gross_slip,
              double object_height_m, const std::vector<double>& controls);
 
-  /// Appends the image pipeline's output of the frame just recorded by Frame() to sensor
-  /// group `sensor` (frames `width` x `height` px). Call it for every frame of a run or for
-  /// none. Throws std::logic_error, recording nothing, if the sensor index, the pin count or
-  /// the frame size does not fit.
   /// Labels every frame from index `first_frame` on as gross slip, in every group: the onset
   /// found at a later step is dated back to the step of `first_frame` (RailRun::TrackOnset).
   void LabelGrossFrom(size_t first_frame);
 
+  /// Appends the image pipeline's output of the frame just recorded by Frame() to sensor
+  /// group `sensor` (frames `width` x `height` px). Call it for every frame of a run or for
+  /// none. Throws std::logic_error, recording nothing, if the sensor index, the pin count or
+  /// the frame size does not fit.
   void Images(size_t sensor, const ImageReading& reading, int width, int height);
 
  private:

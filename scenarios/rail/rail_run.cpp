@@ -250,9 +250,9 @@ void RailRun::ReadLabels() {
 
 void RailRun::TrackOnset(double t, bool seek_onset) {
   // Gross onset, once the object is held: the first step of the uninterrupted run of steps in
-  // which every contacting pin slides that brings the object into motion. A released shell
-  // that rings (skin.shell_damping = gel) springs back under the still object for a step
-  // before the object follows; those steps and their frames are gross slip too.
+  // which every contacting pin slides that brings the object into motion. The skin often lets
+  // go a step before the object follows (its released shear springs back under the still
+  // object); those steps and their frames are gross slip too.
   if (!seek_onset) return;
   if (!all_slide_) {
     all_slide_since_ = std::nan("");
