@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -149,10 +150,8 @@ TEST(SceneHealthTest, TheSkinLettingGoUnderTheStillObjectIsGrossSlipFromThatStep
   EXPECT_NEAR(s.gross_slip_onset_s, 3.250, 1e-6);
   const SensorRecord& sensor = rec.sensors[0];
   const size_t N = static_cast<size_t>(sensor.n_pins);
-  size_t onset_frame = rec.frames();
-  for (size_t f = 0; f < rec.frames() && onset_frame == rec.frames(); ++f) {
-    if (rec.time[f] >= s.gross_slip_onset_s - 1e-9) onset_frame = f;
-  }
+  const size_t onset_frame = static_cast<size_t>(
+      std::lower_bound(rec.time.begin(), rec.time.end(), s.gross_slip_onset_s - 1e-9) - rec.time.begin());
   ASSERT_LT(onset_frame, rec.frames());
   EXPECT_NEAR(rec.time[onset_frame], s.gross_slip_onset_s, 1e-9);  // a frame on the onset's step
   EXPECT_EQ(sensor.gross_slip[onset_frame], 1);
