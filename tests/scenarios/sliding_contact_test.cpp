@@ -25,13 +25,14 @@ struct SlideForces {
   int sliding_frames = 0;  ///< frames examined
 };
 
-// Deterministic rail run, frames at 500 Hz; the sliding window runs from 10 ms after the
-// onset to halfway to the first frame without contact (before the plate's edge reaches the
-// contact patch).
-SlideForces Slide(double free_sliding_speed_mm_s, RailScenarioConfig c = {}) {
+// Deterministic rail run, frames at 500 Hz; the sliding window runs from `skip_frames`
+// frames after the onset (by default 10 ms, past the release) to halfway to the first frame
+// without contact (before the plate's edge reaches the contact patch).
+SlideForces Slide(double free_sliding_speed_mm_s, RailScenarioConfig c = {}, double retract_speed_mm_s = 1.0,
+                  size_t skip_frames = 5) {
   c.contact.friction_jitter = 0.0;
   c.rail.press_depth_jitter_mm = 0.0;
-  c.rail.retract_speed_mm_s = 1.0;
+  c.rail.retract_speed_mm_s = retract_speed_mm_s;
   c.sensor.pixel_noise_px = 0.0;
   c.sensor.dropout_prob = 0.0;
   c.sensor.frame_rate_hz = 500.0;
@@ -61,7 +62,7 @@ SlideForces Slide(double free_sliding_speed_mm_s, RailScenarioConfig c = {}) {
   out.onset_pins = pins(onset - 1);
   out.min_ratio = 1e9;
   out.min_pins = out.onset_pins;
-  for (size_t f = onset + 5; f < (onset + lost) / 2; ++f) {
+  for (size_t f = onset + skip_frames; f < (onset + lost) / 2; ++f) {
     out.min_ratio = std::min(out.min_ratio, total(f) / out.onset_N);
     out.min_pins = std::min(out.min_pins, pins(f));
     ++out.sliding_frames;
@@ -113,6 +114,28 @@ TEST_F(SlidingContactTest, ARingingGelShellChattersAtTwiceItsValidatedStep) {
   ASSERT_GE(coarse.sliding_frames, 10);
   EXPECT_LT(coarse.min_ratio, 0.5);
   EXPECT_LT(coarse.min_pins, coarse.onset_pins / 2);
+}
+
+// At the hardware's 0.1 mm/s the release itself (the window from the onset on) loses some
+// sliding contacts for a step at the default 2 ms step; at 1 ms it keeps them all (README,
+// "Known limitations").
+TEST_F(SlidingContactTest, AtTheHardwaresSpeedTheReleaseKeepsEveryContactAtOneMillisecond) {
+  RailScenarioConfig c;
+  c.sim.timestep_s = 0.001;
+  const SlideForces fine = Slide(30.0, c, 0.1, 0);
+  ASSERT_GE(fine.sliding_frames, 20);
+  // Measured: 0.985 of the onset force, all 19 pins in contact.
+  EXPECT_GT(fine.min_ratio, 0.9) << "over " << fine.sliding_frames << " frames";
+  EXPECT_EQ(fine.min_pins, fine.onset_pins);
+}
+
+TEST_F(SlidingContactTest, AtTheHardwaresSpeedTheReleaseLosesContactsForAStepAtTheDefaultStep) {
+  // The limitation the test above avoids. Measured: 0.62 of the onset force, 13 of 19 pins
+  // in contact, two steps after the onset; from 10 ms after it on, 0.83 and all 19.
+  const SlideForces coarse = Slide(30.0, {}, 0.1, 0);
+  ASSERT_GE(coarse.sliding_frames, 20);
+  EXPECT_LT(coarse.min_ratio, 0.75);
+  EXPECT_LT(coarse.min_pins, coarse.onset_pins);
 }
 
 }  // namespace
