@@ -243,7 +243,9 @@ TEST_F(IncipientScenarioTest, SlipMemoryMakesTheOnsetsConvergeAsTheStepHalves) {
   // (flicker 3 against 2; README 'Known limitations'); nothing else is flagged.
   EXPECT_LE(fine.health.flicker_max, 3) << fine.health.reason;
   EXPECT_EQ(fine.health.reason.find(';'), std::string::npos) << fine.health.reason;
-  if (!fine.health.ok) EXPECT_NE(fine.health.reason.find("flickered"), std::string::npos) << fine.health.reason;
+  if (!fine.health.ok) {
+    EXPECT_NE(fine.health.reason.find("flickered"), std::string::npos) << fine.health.reason;
+  }
   // Measured with the preset's soft gel and clamped rim (seed 1): 17.163 s at 0.5 ms, 17.175 s
   // at 0.25 and 0.125 ms; `tactip accuracy incipient` puts the default 21.8 ms from its
   // 0.125 ms reference (README, "Accuracy"); the incipient onset at 13.450 s at all three.
