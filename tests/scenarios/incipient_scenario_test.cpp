@@ -1,7 +1,8 @@
 // The incipient scenario: the rail protocol on clear acrylic with an external camera.
 // Ground-truth incipient-slip labels and run attributes, which pins slip first, the
-// external markers, and their storage. Each simulated run takes ~0.3-1 s; runs are
-// cached per (skin, seed) within the test process and simulated in parallel.
+// external markers, and their storage. Each simulated run takes 5-21 s; runs are cached per
+// (skin, seed) within the test process, shared between the processes of one ctest invocation
+// (shared_runs.h) and simulated in parallel.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -139,8 +140,9 @@ TEST(IncipientScenarioConfigTest, ExternalCameraNeedsTheAcrylicStimulus) {
 
 // ---- Ground truth --------------------------------------------------------------------
 
-// Every test that asks for a run is guarded: a run is simulated in the first test that asks
-// for it, and must go without a MuJoCo warning (a warning also stops the run).
+// Every test that asks for a run is guarded: a run is simulated in the first test (of the
+// process, or of the ctest invocation when runs are shared) that asks for it, and must go
+// without a MuJoCo warning (a warning also stops the run, so no such run is stored).
 class IncipientScenarioTest : public testing::MujocoWarningGuard {};
 
 TEST_F(IncipientScenarioTest, SmoothSkinSlipsAllAtOnceWithoutIncipientPhase) {
