@@ -7,23 +7,36 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 
 #include "sensors/dataset.h"
 
 namespace tactip::testing {
 
-/// An exclusive lock on a file, held for the object's lifetime.
+/// An exclusive lock on a file, held for the object's lifetime; throws std::runtime_error
+/// if the file cannot be opened or locked.
 class FileLock {
  public:
-  explicit FileLock(const std::filesystem::path& path) : fd_(::open(path.c_str(), O_CREAT | O_RDWR, 0644)) {
-    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+  explicit FileLock(const std::filesystem::path& path)
+      : fd_(::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
+    if (fd_ < 0) throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
+    int rc = 0;
+    while ((rc = ::flock(fd_, LOCK_EX)) != 0 && errno == EINTR) {
+    }
+    if (rc != 0) {
+      const std::string reason = std::strerror(errno);
+      ::close(fd_);
+      throw std::runtime_error("cannot lock " + path.string() + ": " + reason);
+    }
   }
   ~FileLock() {
-    if (fd_ < 0) return;
     ::flock(fd_, LOCK_UN);
     ::close(fd_);
   }
@@ -38,24 +51,30 @@ class FileLock {
 /// variable TACTIP_TEST_SHARED_RUNS this is `simulate()`. With it (ctest sets it for the
 /// scenario tests and empties the folder before any of them runs; tests/CMakeLists.txt), the
 /// first process to ask simulates and stores the run there as a one-run dataset, under a
-/// lock that makes the others wait; they read it back. The dataset round trip is exact
-/// (IncipientDatasetTest checks it on a simulated record).
+/// lock that makes the others wait. Every process, the first included, then reads the stored
+/// run back, so all of them test the same data. The dataset round trip is exact
+/// (IncipientDatasetTest checks it on a simulated record). One process's file reads and
+/// writes are serialised (the simulations still run in parallel).
 inline RunRecord SharedRun(const std::string& key, const std::function<RunRecord()>& simulate) {
   const char* folder = std::getenv("TACTIP_TEST_SHARED_RUNS");
   if (folder == nullptr || *folder == '\0') return simulate();
+  static std::mutex file_io;
   const std::filesystem::path dir(folder);
   std::filesystem::create_directories(dir);
   const FileLock lock(dir / (key + ".lock"));
   const std::filesystem::path path = dir / (key + ".h5");
-  if (std::filesystem::exists(path)) return DatasetReader(path.string()).ReadRun(0);
-  RunRecord rec = simulate();
-  DatasetHeader header;
-  header.tactip_version = "test";
-  header.scenario = "shared-test-run";
-  DatasetWriter writer(path.string(), header);
-  writer.WriteRun(rec);
-  writer.Commit();
-  return rec;
+  if (!std::filesystem::exists(path)) {
+    const RunRecord rec = simulate();
+    DatasetHeader header;
+    header.tactip_version = "test";
+    header.scenario = "shared-test-run";
+    const std::lock_guard io(file_io);
+    DatasetWriter writer(path.string(), header);
+    writer.WriteRun(rec);
+    writer.Commit();
+  }
+  const std::lock_guard io(file_io);
+  return DatasetReader(path.string()).ReadRun(0);
 }
 
 }  // namespace tactip::testing

@@ -481,6 +481,17 @@ TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttr
   EXPECT_EQ(back.sensors[0].pos_m, rec.sensors[0].pos_m);
   EXPECT_EQ(back.sensors[0].gross_slip, rec.sensors[0].gross_slip);
   EXPECT_EQ(back.sensors[0].normal_N, rec.sensors[0].normal_N);
+  EXPECT_EQ(back.sensors[0].tangential_N, rec.sensors[0].tangential_N);
+  EXPECT_EQ(back.sensors[0].valid, rec.sensors[0].valid);
+  EXPECT_EQ(back.sensors[0].attrs, rec.sensors[0].attrs);
+  EXPECT_EQ(back.sensors[0].text_attrs, rec.sensors[0].text_attrs);
+  EXPECT_EQ(back.actions.actuators, rec.actions.actuators);
+  EXPECT_EQ(back.actions.controls, rec.actions.controls);
+  ASSERT_EQ(back.actions.list.size(), rec.actions.list.size());
+  for (size_t i = 0; i < rec.actions.list.size(); ++i) {
+    EXPECT_EQ(back.actions.list[i].time_s, rec.actions.list[i].time_s);
+    EXPECT_EQ(back.actions.list[i].what, rec.actions.list[i].what);
+  }
   EXPECT_EQ(back.text_attrs, rec.text_attrs);
   ASSERT_EQ(back.attrs.size(), rec.attrs.size());
   for (const auto& [key, value] : rec.attrs) {
