@@ -27,6 +27,7 @@
 #include "sensors/camera.h"
 #include "sensors/dataset.h"
 #include "input_error.h"
+#include "run_records.h"
 #include "shared_runs.h"
 
 namespace tactip {
@@ -473,35 +474,9 @@ TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttr
   }
   EXPECT_EQ(back.sensors[0].text_attrs.at("skin_pattern"), "fingerprint-v2");
   EXPECT_EQ(back.text_attrs.at("stimulus"), "acrylic");
-  // Everything else the tests read from a stored run comes back exactly too (the shared runs
-  // of the other tests are read back from such files; shared_runs.h).
-  EXPECT_EQ(back.time, rec.time);
-  EXPECT_EQ(back.object_height_m, rec.object_height_m);
-  EXPECT_EQ(back.sensors[0].pos_px, rec.sensors[0].pos_px);
-  EXPECT_EQ(back.sensors[0].pos_m, rec.sensors[0].pos_m);
-  EXPECT_EQ(back.sensors[0].gross_slip, rec.sensors[0].gross_slip);
-  EXPECT_EQ(back.sensors[0].normal_N, rec.sensors[0].normal_N);
-  EXPECT_EQ(back.sensors[0].tangential_N, rec.sensors[0].tangential_N);
-  EXPECT_EQ(back.sensors[0].valid, rec.sensors[0].valid);
-  EXPECT_EQ(back.sensors[0].attrs, rec.sensors[0].attrs);
-  EXPECT_EQ(back.sensors[0].text_attrs, rec.sensors[0].text_attrs);
-  EXPECT_EQ(back.actions.actuators, rec.actions.actuators);
-  EXPECT_EQ(back.actions.controls, rec.actions.controls);
-  ASSERT_EQ(back.actions.list.size(), rec.actions.list.size());
-  for (size_t i = 0; i < rec.actions.list.size(); ++i) {
-    EXPECT_EQ(back.actions.list[i].time_s, rec.actions.list[i].time_s);
-    EXPECT_EQ(back.actions.list[i].what, rec.actions.list[i].what);
-  }
-  EXPECT_EQ(back.text_attrs, rec.text_attrs);
-  ASSERT_EQ(back.attrs.size(), rec.attrs.size());
-  for (const auto& [key, value] : rec.attrs) {
-    ASSERT_TRUE(back.attrs.count(key)) << key;
-    if (std::isnan(value)) {
-      EXPECT_TRUE(std::isnan(back.attrs.at(key))) << key;
-    } else {
-      EXPECT_EQ(back.attrs.at(key), value) << key;
-    }
-  }
+  // Everything else comes back exactly too (the shared runs of the other tests are read back
+  // from such files; shared_runs.h).
+  ExpectSameRun(rec, back);
   // The report gives the same figures from the file as from memory.
   const IncipientRunMetrics a = AnalyzeIncipientRun(rec, IncipientParams{});
   const IncipientRunMetrics b = AnalyzeIncipientRun(back, IncipientParams{});
