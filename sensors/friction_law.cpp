@@ -8,8 +8,8 @@ namespace tactip {
 
 FrictionLaw::FrictionLaw(const ContactConfig& contact, const LabelConfig& labels, double mu,
                          const std::vector<int>& pin_geom, int stimulus_geom, std::uint64_t seed,
-                         CompiledModel& model, double timestep_s)
-    : contact_(contact), slip_speed_m_s_(labels.slip_speed_m_s), timestep_s_(timestep_s), pin_geom_(pin_geom) {
+                         CompiledModel& model)
+    : contact_(contact), slip_speed_m_s_(labels.slip_speed_m_s), pin_geom_(pin_geom) {
   // Static coefficients with their per-pin spread; the stimulus at the lowest kinetic value.
   const size_t n = pin_geom.size();
   const double mu_k = mu * contact.kinetic_ratio;
@@ -28,6 +28,7 @@ void FrictionLaw::Update(const std::vector<PinContactSample>& samples, const std
                          CompiledModel& model) {
   const bool weakening = contact_.weakening_speed_mm_s > 0.0;
   const double memory_m = contact_.slip_memory_um * 1e-6;
+  const double dt = model.timestep();
   for (size_t i = 0; i < pin_geom_.size(); ++i) {
     if (pin_geom_[i] < 0) continue;
     // A pin slides from the step it is labelled slipping until it sticks again (or leaves
@@ -42,7 +43,7 @@ void FrictionLaw::Update(const std::vector<PinContactSample>& samples, const std
       const double v = samples[i].in_contact ? samples[i].slip_speed_m_s : 0.0;
       const double target = contact_.WeakenedFriction(mu_pin_[i], v, now);
       const bool remembers = memory_m > 0.0 && samples[i].in_contact;
-      mu_cur_[i] = remembers ? target + (mu_cur_[i] - target) * std::exp(-v * timestep_s_ / memory_m) : target;
+      mu_cur_[i] = remembers ? target + (mu_cur_[i] - target) * std::exp(-v * dt / memory_m) : target;
     } else {
       // Static -> kinetic when a pin slides, back when it sticks.
       if (now == static_cast<bool>(sliding_[i])) continue;

@@ -20,15 +20,15 @@ class FrictionLaw {
  public:
   /// Draws each pin's static coefficient around `mu` (relative spread
   /// contact.pin_friction_spread, from `seed`) and sets the geoms of `model`: the pins'
-  /// (`pin_geom`, -1 = no geom) and the stimulus's (`stimulus_geom`). `timestep_s`: the
-  /// time between Update calls (every physics step), for contact.slip_memory_um.
+  /// (`pin_geom`, -1 = no geom) and the stimulus's (`stimulus_geom`).
   FrictionLaw(const ContactConfig& contact, const LabelConfig& labels, double mu, const std::vector<int>& pin_geom,
-              int stimulus_geom, std::uint64_t seed, CompiledModel& model, double timestep_s);
+              int stimulus_geom, std::uint64_t seed, CompiledModel& model);
 
   /// True when a pin's coefficient changes as it slides (kinetic_ratio < 1): Update must then
   /// see the contacts at every step.
   bool switching() const { return contact_.kinetic_ratio < 1.0; }
-  /// Switches each pin from this step's contact samples and slip labels, in `model`.
+  /// Switches each pin from this step's contact samples and slip labels, in `model`; called
+  /// at every physics step, whose length (the model's, for contact.slip_memory_um) may change.
   void Update(const std::vector<PinContactSample>& samples, const std::vector<std::uint8_t>& pin_slip,
               CompiledModel& model);
   /// Per pin: the static coefficient.
@@ -37,7 +37,6 @@ class FrictionLaw {
  private:
   const ContactConfig contact_;
   const double slip_speed_m_s_;
-  const double timestep_s_;
   const std::vector<int> pin_geom_;
   std::vector<double> mu_pin_;          // per pin: static coefficient
   std::vector<double> mu_cur_;          // per pin: coefficient in force

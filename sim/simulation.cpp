@@ -113,6 +113,7 @@ void CompiledModel::SetDofDamping(int dof, double c) { model_->dof_damping[dof] 
 double CompiledModel::DofDamping(int dof) const { return model_->dof_damping[dof]; }
 double CompiledModel::GeomFriction(int g) const { return model_->geom_friction[3 * g]; }
 double CompiledModel::timestep() const { return model_->opt.timestep; }
+void CompiledModel::SetTimestep(double seconds) { model_->opt.timestep = seconds; }
 double CompiledModel::gravity() const { return mju_norm3(model_->opt.gravity); }
 int CompiledModel::nv() const { return model_->nv; }
 int CompiledModel::nu() const { return model_->nu; }

@@ -64,6 +64,8 @@ class CompiledModel {
   double GeomFriction(int geom) const;
   /// Physics timestep in seconds.
   double timestep() const;
+  /// Changes the physics step from the next step on (a run refines it at an event).
+  void SetTimestep(double seconds);
   /// Gravity magnitude in m/s^2.
   double gravity() const;
   int nv() const;

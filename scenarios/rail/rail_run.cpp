@@ -115,7 +115,7 @@ void RailRun::AddChannels(const RailScenarioConfig& cfg, const Draws& d) {
     const TactileSensorIds& ids = im_.sensors[k];
     channels_.push_back(Channel{
         TactileSensor(im_.sensor_specs[k], ids, DeriveSeed(base, 1), DeriveSeed(base, 2)),
-        FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_, dt_),
+        FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_),
         std::vector<std::uint8_t>(n_, 0), {}, std::nullopt});
     // Rendered images only when asked for (their pixel noise on stream 4).
     if (cfg.images.enabled) channels_.back().imaging.emplace(cfg.images, cfg.sensor, DeriveSeed(base, 4));
@@ -163,7 +163,7 @@ bool RailRun::Step(RunRecord& rec) {
     started_ = true;
   }
   const long long n = step_;
-  const double t = static_cast<double>(n) * dt_;
+  const double t = StepTime(n);
   if (t > end_time_ || controller_->Done(t)) return false;
   // Drive the arm servos with the controller's targets and advance one step.
   arm_ = controller_->Targets(t);
@@ -196,7 +196,7 @@ bool RailRun::Step(RunRecord& rec) {
   // One camera frame: the state at step n (time t).
   const double tf = static_cast<double>(frame_) / c_.sensor.frame_rate_hz;
   ++frame_;
-  next_frame_step_ = FrameStep(frame_, c_.sensor.frame_rate_hz, dt_);
+  next_frame_step_ = NextFrameStep();
   RecordFrame(t, tf);
   TrackEvents(t, tf);
   TrackHealth(t);
@@ -261,10 +261,33 @@ void RailRun::TrackOnset(double t, bool seek_onset) {
   if (std::isnan(all_slide_since_)) {
     all_slide_since_ = t;
     all_slide_frame_ = frame_;
+    RefineStep(t);
   }
   if (!gross_) return;
   sum_.gross_slip_onset_s = all_slide_since_;
   recorder_->LabelGrossFrom(static_cast<size_t>(all_slide_frame_));
+}
+
+void RailRun::RefineStep(double t) {
+  // The release kicks the pins' normal modes as friction drops to kinetic: at a coarse step
+  // some sliding contacts let go for a step (README 'Sliding contacts'). Everything before the
+  // first all-slide step keeps the configured step; the sliding phase is short.
+  const double fine = c_.sim.SlidingTimestep();
+  if (refined_ || fine >= dt_) return;
+  refined_ = true;
+  step0_ = step_ - 1;  // the step whose state is at t
+  time0_ = t;
+  dt_ = fine;
+  model_.SetTimestep(fine);
+  next_frame_step_ = NextFrameStep();
+}
+
+double RailRun::StepTime(long long n) const { return time0_ + static_cast<double>(n - step0_) * dt_; }
+
+long long RailRun::NextFrameStep() const {
+  if (!refined_) return FrameStep(frame_, c_.sensor.frame_rate_hz, dt_);
+  const double tf = static_cast<double>(frame_) / c_.sensor.frame_rate_hz;
+  return std::max(step_, step0_ + std::llround((tf - time0_) / dt_));
 }
 
 void RailRun::TrackPrediction(double t) {
@@ -424,7 +447,7 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   }
   sum_.held = !left_behind_ && (std::isnan(sum_.gross_slip_onset_s) || sum_.gross_slip_onset_s >= sched_.retract_start);
   sum_.mujoco_warnings = sim_->WarningCount();
-  sum_.sim_time_s = static_cast<double>(sum_.steps) * dt_;
+  sum_.sim_time_s = StepTime(step_);
   rec.attrs["gross_slip_onset_s"] = sum_.gross_slip_onset_s;
   rec.attrs["object_fall_s"] = sum_.object_fall_s;
   rec.attrs["object_mass_kg"] = c_.object.mass_kg;

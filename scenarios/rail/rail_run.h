@@ -111,6 +111,10 @@ class RailRun {
   void UpdateShellDamping();  // the gel shell's damper from each sensor's stuck contacts
   void ReadContacts();
   void TrackOnset(double t, bool seek_onset);
+  /// From the state at `t` (the last step) on: sim.sliding_timestep_s, if smaller than the step.
+  void RefineStep(double t);
+  double StepTime(long long n) const;  // the time of the state after step n
+  long long NextFrameStep() const;     // the step nearest frame frame_'s time, not before step_
   void TrackPrediction(double t);
   void RecordFrame(double t, double tf);
   void TrackIncipient(double t);
@@ -136,10 +140,14 @@ class RailRun {
   RailController* controller_;  // schedule_controller_ unless given
   std::optional<RunRecorder> recorder_;  // from the first step on
   ArmTargets arm_;              // the targets of the last step
-  const double dt_, weight_N_;
+  double dt_;                   // the physics step in force: sim.timestep_s, then the sliding step
+  const double weight_N_;
 
-  // Step and frame counters.
+  // Step and frame counters; the step's time counts from the last change of step (step0_, time0_).
   long long step_ = 0, frame_ = 0, next_frame_step_ = 0;
+  long long step0_ = 0;
+  double time0_ = 0.0;
+  bool refined_ = false;  // the sliding step is in force
   bool started_ = false;
 
   // Per step: the holding force, the gross-slip label, the pins of all sensors in contact and slipping.

@@ -22,9 +22,10 @@ using testing::Slurp;
 
 /// The fixture's job: two short runs of a 19-pin skin on acrylic with the external camera.
 /// The fixture predates the gel field (skin.marker_model): its markers are the pin bodies';
-/// and the free sliding of fast contacts (sim.free_sliding_speed_mm_s).
+/// the free sliding of fast contacts (sim.free_sliding_speed_mm_s) and the sliding step
+/// (sim.sliding_timestep_s).
 const char* kFixtureArgs =
-    "--set skin.marker_model=pins --set sim.free_sliding_speed_mm_s=0 --runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
+    "--set skin.marker_model=pins --set sim.free_sliding_speed_mm_s=0 --set sim.sliding_timestep_s=0 --runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
     "--set sensor.frame_rate_hz=20 --set rail.lift_mm=5 --set rail.hold_s=0.1 --set rail.settle_s=0.1 "
     "--set rail.retract_speed_mm_s=5 --set rail.post_fall_s=0.1 --jobs 1 --quiet";
 
@@ -51,14 +52,14 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
   EXPECT_EQ(old_file.header().layout_version, 1);
   EXPECT_EQ(now.header().layout_version, 2);
   // The same config; this version has the gel field's keys, the gel's own shear modulus, the
-  // free-sliding speed, the breakaway friction, the friction's slip memory, the shell's damper (and its
+  // free-sliding speed, the sliding step, the breakaway friction, the friction's slip memory, the shell's damper (and its
   // gel's loss tangent) and
   // the skin's rim (at the values that give the fixture's physics), adds the images
   // section (off, at its defaults) and lists the scene's sensors (the one default TacTip).
   std::string now_yaml = now.header().config_yaml;
   for (const std::string line :
        {"  marker_model: \"pins\"\n", "  gel_flow_depth_mm: 2.5\n", "  gel_squeeze_mm: 0.5\n",
-        "  free_sliding_speed_mm_s: 0\n", "  breakaway_ratio: 1\n", "  slip_memory_um: 0\n",
+        "  free_sliding_speed_mm_s: 0\n", "  sliding_timestep_s: 0\n", "  breakaway_ratio: 1\n", "  slip_memory_um: 0\n",
         "  shell_damping: \"viscous\"\n", "  gel_loss_tangent: 0.16\n", "  gel_shear_modulus_kpa: 0\n", "  rim: \"free\"\n"}) {
     const size_t at = now_yaml.find(line);
     ASSERT_NE(at, std::string::npos) << line;

@@ -108,8 +108,8 @@ TEST(FrictionLawTest, SlidingPinDropsToKineticAndSticksBack) {
   contact.kinetic_ratio = 0.6;
   contact.pin_friction_spread = 0.0;
   const LabelConfig labels;
-  FrictionLaw law(contact, labels, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7, rail.model,
-                  1e-3);
+  FrictionLaw law(contact, labels, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7,
+                  rail.model);
   int pin = 0;
   while (rail.ids.pin_geom[pin] < 0) ++pin;
   const int geom = rail.ids.pin_geom[pin];
@@ -138,7 +138,7 @@ TEST(FrictionLawTest, VelocityWeakeningIsHalfwayAtTheWeakeningSpeed) {
   contact.kinetic_ratio = 0.6;
   contact.weakening_speed_mm_s = 1.0;
   FrictionLaw law(contact, LabelConfig{}, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7,
-                  rail.model, 1e-3);
+                  rail.model);
   const size_t n = rail.ids.pin_geom.size();
   std::vector<PinContactSample> samples(n, PinContactSample{true, 1e-3, 1.0});
   law.Update(samples, std::vector<std::uint8_t>(n, 1), rail.model);
@@ -154,12 +154,13 @@ TEST(FrictionLawTest, SlipMemoryWeakensOverTheSlipDistanceAndResetsOutOfContact)
   contact.weakening_speed_mm_s = 1.0;
   contact.slip_memory_um = 10.0;
   FrictionLaw law(contact, LabelConfig{}, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7,
-                  rail.model, 1e-3);
+                  rail.model);
   int pin = 0;
   while (rail.ids.pin_geom[pin] < 0) ++pin;
   const int geom = rail.ids.pin_geom[pin];
   const size_t n = rail.ids.pin_geom.size();
-  // Sliding at v_c = 1 mm/s, whose memoryless value is 0.8: 1 um per 1 ms step.
+  // Sliding at v_c = 1 mm/s, whose memoryless value is 0.8: 1 um per 1 ms step (the model's).
+  rail.model.SetTimestep(1e-3);
   std::vector<PinContactSample> samples(n, PinContactSample{true, 1e-3, 1.0});
   const std::vector<std::uint8_t> slipping(n, 1), stuck(n, 0);
   law.Update(samples, slipping, rail.model);
@@ -167,10 +168,14 @@ TEST(FrictionLawTest, SlipMemoryWeakensOverTheSlipDistanceAndResetsOutOfContact)
   for (int k = 1; k < 10; ++k) law.Update(samples, slipping, rail.model);
   // After one memory length of slip the excess over 0.8 has fallen to 1/e.
   EXPECT_NEAR(rail.model.GeomFriction(geom), 0.8 + 0.2 * std::exp(-1.0), 1e-12);
+  // A step changed mid-run is followed: 5 ms at 1 mm/s is half a memory length more.
+  rail.model.SetTimestep(5e-3);
+  law.Update(samples, slipping, rail.model);
+  EXPECT_NEAR(rail.model.GeomFriction(geom), 0.8 + 0.2 * std::exp(-1.5), 1e-12);
   // Stuck again: the coefficient stays where the slip left it (no healing).
   for (auto& s : samples) s.slip_speed_m_s = 0.0;
   law.Update(samples, stuck, rail.model);
-  EXPECT_NEAR(rail.model.GeomFriction(geom), 0.8 + 0.2 * std::exp(-1.0), 1e-12);
+  EXPECT_NEAR(rail.model.GeomFriction(geom), 0.8 + 0.2 * std::exp(-1.5), 1e-12);
   // Out of contact: back to the static coefficient.
   for (auto& s : samples) s.in_contact = false;
   law.Update(samples, stuck, rail.model);
@@ -183,7 +188,7 @@ TEST(FrictionLawTest, PerPinSpreadStaysInItsBandAndTheStimulusBelowEveryKineticV
   contact.kinetic_ratio = 0.6;
   contact.pin_friction_spread = 0.2;
   FrictionLaw law(contact, LabelConfig{}, 1.0, rail.ids.pin_geom, rail.model.GeomId(RailNames::kStimulus), 7,
-                  rail.model, 1e-3);
+                  rail.model);
   double lo = 10.0, hi = 0.0;
   for (double mu : law.static_mu()) {
     lo = std::min(lo, mu);
