@@ -244,7 +244,7 @@ void Simulation::AuditEnergy() {
   const mjData* d = data_.get();
   const double h = m->opt.timestep;
   const double energy = d->energy[0] + d->energy[1];
-  if (audit_started_) energy_created_J_ = energy - energy_prev_J_ - h * power_prev_W_;
+  if (audit_started_) energy_created_J_ = energy - energy_prev_J_ - step_prev_s_ * power_prev_W_;
   double power = 0.0;
   for (int i = 0; i < m->nv; ++i) {
     const double v = d->qvel[i];
@@ -257,6 +257,7 @@ void Simulation::AuditEnergy() {
   elastic_energy_J_ = d->energy[0] - gravity;
   energy_prev_J_ = energy;
   power_prev_W_ = power;
+  step_prev_s_ = h;  // the step this power acts over (a run may change the step)
   audit_started_ = true;
 }
 

@@ -169,7 +169,7 @@ class Simulation {
   StepProfile profile_;
   // Energy audit: energy and non-conservative power of the previous step.
   bool audit_started_ = false;
-  double energy_prev_J_ = 0.0, power_prev_W_ = 0.0;
+  double energy_prev_J_ = 0.0, power_prev_W_ = 0.0, step_prev_s_ = 0.0;
   double energy_created_J_ = 0.0, elastic_energy_J_ = 0.0;
 };
 

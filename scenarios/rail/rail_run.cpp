@@ -261,33 +261,36 @@ void RailRun::TrackOnset(double t, bool seek_onset) {
   if (std::isnan(all_slide_since_)) {
     all_slide_since_ = t;
     all_slide_frame_ = frame_;
-    RefineStep(t);
+    SwitchToSlidingStep();
   }
   if (!gross_) return;
   sum_.gross_slip_onset_s = all_slide_since_;
   recorder_->LabelGrossFrom(static_cast<size_t>(all_slide_frame_));
 }
 
-void RailRun::RefineStep(double t) {
+void RailRun::SwitchToSlidingStep() {
   // The release kicks the pins' normal modes as friction drops to kinetic: at a coarse step
-  // some sliding contacts let go for a step (README 'Sliding contacts'). Everything before the
-  // first all-slide step keeps the configured step; the sliding phase is short.
+  // some sliding contacts let go for a step (README 'Sliding contacts'). The steps before the
+  // first all-slide step keep the configured step; the sliding phase is short.
   const double fine = c_.sim.SlidingTimestep();
-  if (refined_ || fine >= dt_) return;
-  refined_ = true;
-  step0_ = step_ - 1;  // the step whose state is at t
-  time0_ = t;
+  if (sliding_step_ || fine >= dt_) return;
+  sliding_step_ = true;
+  // The step just taken ran at the configured step: the next one starts where it ended.
+  switch_time_ = StepTime(step_);
+  switch_step_ = step_;
   dt_ = fine;
   model_.SetTimestep(fine);
   next_frame_step_ = NextFrameStep();
 }
 
-double RailRun::StepTime(long long n) const { return time0_ + static_cast<double>(n - step0_) * dt_; }
+double RailRun::StepTime(long long n) const {
+  return switch_time_ + static_cast<double>(n - switch_step_) * dt_;
+}
 
 long long RailRun::NextFrameStep() const {
-  if (!refined_) return FrameStep(frame_, c_.sensor.frame_rate_hz, dt_);
+  if (!sliding_step_) return FrameStep(frame_, c_.sensor.frame_rate_hz, dt_);
   const double tf = static_cast<double>(frame_) / c_.sensor.frame_rate_hz;
-  return std::max(step_, step0_ + std::llround((tf - time0_) / dt_));
+  return std::max(step_, switch_step_ + std::llround((tf - switch_time_) / dt_));
 }
 
 void RailRun::TrackPrediction(double t) {

@@ -111,9 +111,9 @@ class RailRun {
   void UpdateShellDamping();  // the gel shell's damper from each sensor's stuck contacts
   void ReadContacts();
   void TrackOnset(double t, bool seek_onset);
-  /// From the state at `t` (the last step) on: sim.sliding_timestep_s, if smaller than the step.
-  void RefineStep(double t);
-  double StepTime(long long n) const;  // the time of the state after step n
+  /// From the next step on: sim.sliding_timestep_s, if smaller than the step (once per run).
+  void SwitchToSlidingStep();
+  double StepTime(long long n) const;  // the time at which step n starts (after n steps)
   long long NextFrameStep() const;     // the step nearest frame frame_'s time, not before step_
   void TrackPrediction(double t);
   void RecordFrame(double t, double tf);
@@ -143,11 +143,11 @@ class RailRun {
   double dt_;                   // the physics step in force: sim.timestep_s, then the sliding step
   const double weight_N_;
 
-  // Step and frame counters; the step's time counts from the last change of step (step0_, time0_).
+  // Step and frame counters; a step's time counts from the switch to the sliding step.
   long long step_ = 0, frame_ = 0, next_frame_step_ = 0;
-  long long step0_ = 0;
-  double time0_ = 0.0;
-  bool refined_ = false;  // the sliding step is in force
+  long long switch_step_ = 0;  // the first step at the sliding step (0 before the switch)
+  double switch_time_ = 0.0;   // the time at which it starts
+  bool sliding_step_ = false;  // the sliding step is in force
   bool started_ = false;
 
   // Per step: the holding force, the gross-slip label, the pins of all sensors in contact and slipping.
