@@ -93,7 +93,7 @@ TEST_F(SlidingStepTest, TheRunsClockIsMujocos) {
   EXPECT_LE(s.sim_time_s - rec.time.back(), 0.01 + 1e-9);
 }
 
-TEST_F(SlidingStepTest, ALargerSlidingStepThanTheStepChangesNothing) {
+TEST_F(SlidingStepTest, TheSlidingStepIsTheSmallerOfTheTwoAndZeroKeepsTheStep) {
   RailScenarioConfig c;
   c.sim.timestep_s = 0.0005;
   c.sim.sliding_timestep_s = 0.001;
