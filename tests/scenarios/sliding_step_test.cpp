@@ -11,6 +11,7 @@
 #include "mujoco_warning_guard.h"
 #include "scenarios/rail.h"
 #include "scenarios/rail/rail_run.h"
+#include "scenarios/rail/rail_schedule.h"
 #include "sim/base/errors.h"
 
 namespace tactip {
@@ -93,13 +94,59 @@ TEST_F(SlidingStepTest, TheRunsClockIsMujocos) {
   EXPECT_LE(s.sim_time_s - rec.time.back(), 0.01 + 1e-9);
 }
 
-TEST_F(SlidingStepTest, TheSlidingStepIsTheSmallerOfTheTwoAndZeroKeepsTheStep) {
+TEST_F(SlidingStepTest, TheSlidingStepIsTheLargestWholeFractionOfTheStepWithinItAndZeroKeepsTheStep) {
   RailScenarioConfig c;
   c.sim.timestep_s = 0.0005;
   c.sim.sliding_timestep_s = 0.001;
-  EXPECT_EQ(c.sim.SlidingTimestep(), 0.0005);
+  EXPECT_EQ(c.sim.SlidingTimestep(), 0.0005);  // not smaller: the step itself
   c.sim.sliding_timestep_s = 0.0;
   EXPECT_EQ(c.sim.SlidingTimestep(), 0.0005);
+  c.sim.timestep_s = 0.002;
+  c.sim.sliding_timestep_s = 0.001;
+  EXPECT_EQ(c.sim.SlidingTimestep(), 0.001);  // the default: exactly half
+  c.sim.timestep_s = 0.0015;
+  EXPECT_DOUBLE_EQ(c.sim.SlidingTimestep(), 0.00075);  // 1.5 ms / 2, not 1 ms
+  c.sim.timestep_s = 0.003;
+  EXPECT_DOUBLE_EQ(c.sim.SlidingTimestep(), 0.001);  // 3 ms / 3
+  c.sim.sliding_timestep_s = 0.0009;
+  EXPECT_DOUBLE_EQ(c.sim.SlidingTimestep(), 0.00075);  // 3 ms / 4
+}
+
+// Follows the schedule and measures, at each frame, how far the step it was taken at lies
+// from the camera's frame time.
+class FrameGridController : public RailController {
+ public:
+  explicit FrameGridController(const RailSchedule& s) : schedule_(s) {}
+  ArmTargets Targets(double t) override {
+    step_time_s_ = t;
+    return {schedule_.X(t), schedule_.Z(t)};
+  }
+  void OnFrame(const FrameInput& in) override {
+    largest_offset_s = std::max(largest_offset_s, std::abs(step_time_s_ - in.time_s));
+    last_frame_s = in.time_s;
+  }
+  double largest_offset_s = 0.0, last_frame_s = 0.0;
+
+ private:
+  RailSchedule schedule_;
+  double step_time_s_ = 0.0;
+};
+
+TEST_F(SlidingStepTest, FramesStayOnTheCamerasGridAfterTheSwitch) {
+  // A 30 Hz camera on a step of 1/510 s (17 steps a frame): 1 ms does not divide the frame
+  // period, so the sliding step is half the step and the frames stay on the steps' grid.
+  RailScenarioConfig c = Deterministic(0.001);
+  c.sensor.frame_rate_hz = 30.0;
+  c.sim.timestep_s = 1.0 / 510.0;
+  ASSERT_DOUBLE_EQ(c.sim.SlidingTimestep(), 1.0 / 1020.0);
+  const RailSceneIds ids(c, SceneOptions{});
+  FrameGridController controller(RailSchedule(c.rail, c.rail.press_depth_mm * 1e-3));
+  RailRun run(c, ids, 0, 1, &controller);
+  RunRecord rec;
+  const RailRunSummary s = run.Execute(rec, nullptr);
+  ASSERT_FALSE(std::isnan(s.gross_slip_onset_s));
+  ASSERT_GT(controller.last_frame_s, s.gross_slip_onset_s + 0.1);  // frames well after the switch
+  EXPECT_LT(controller.largest_offset_s, 1e-9);
 }
 
 TEST_F(SlidingStepTest, AStepTooSmallToRunIsRefused) {
