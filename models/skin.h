@@ -363,10 +363,12 @@ std::vector<std::string> SkinPreset(const std::string& name);
 inline constexpr double kShearDofValidatedStepS = 0.001;
 
 /// A shell skin whose in-plane mode is damped below this ratio (SkinConfig::ShellDampingRatio)
-/// rings after its release, and is validated up to kLightShellValidatedStepS only.
+/// rings after its release, and is validated with a sliding step up to kLightShellValidatedStepS only.
 inline constexpr double kLightShellDampingRatio = 0.5;
 
-/// Largest step at which a lightly damped shell skin is validated, s. At 2 ms the released
+/// Largest sliding step (from the gross-slip onset on) at which a lightly damped shell skin is
+/// validated, s; its held phase takes the default 2 ms (gel 0.08, flat at 0.1 and 1 mm/s and the
+/// four held-phase scenes: healthy, onsets within 3 ms of 1 ms throughout). At 2 ms the released
 /// shell's ringing makes the sliding contacts chatter during gross slip (the total normal force
 /// of the flat press at 1 mm/s falls to 0.04 of its value at the onset with 6 of 19 pins in
 /// contact under the gel's 0.08, to 0.50 with 12 of 19 under a fixed damper at 0.1, to 0.69 with

@@ -83,7 +83,7 @@ double ShearDofValidatedTimestep(const SkinConfig& skin, const ContactConfig& co
   return kShearDofValidatedStepS / std::max(1.0, contact.friction);
 }
 
-double LightShellValidatedTimestep(const SkinConfig& skin) {
+double LightShellValidatedSlidingStep(const SkinConfig& skin) {
   if (skin.coupling != "shell" || skin.ShellDampingRatio() >= kLightShellDampingRatio) {
     return std::numeric_limits<double>::infinity();
   }

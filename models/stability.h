@@ -60,10 +60,11 @@ StableTimestep LargestStableTimestep(const RailSceneSpec& spec);
 /// makes a pin bounce, 0.5 ms is healthy) (README, "Stability suite").
 double ShearDofValidatedTimestep(const SkinConfig& skin, const ContactConfig& contact);
 
-/// Largest validated step of a shell skin damped below kLightShellDampingRatio (coupling shell;
-/// skin.shear_damping_ratio, or skin.gel_loss_tangent / 2 under skin.shell_damping = gel):
-/// kLightShellValidatedStepS; infinity for any other skin.
-double LightShellValidatedTimestep(const SkinConfig& skin);
+/// Largest validated sliding step (the step a rail run takes from the gross-slip onset on,
+/// SimConfig::SlidingTimestep) of a shell skin damped below kLightShellDampingRatio (coupling
+/// shell; skin.shear_damping_ratio, or skin.gel_loss_tangent / 2 under skin.shell_damping = gel):
+/// kLightShellValidatedStepS; infinity for any other skin. The held phase takes any stable step.
+double LightShellValidatedSlidingStep(const SkinConfig& skin);
 
 /// The contact's touch-down mode.
 StiffMode ContactTouchdownMode(const ContactConfig& contact);

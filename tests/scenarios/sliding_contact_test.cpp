@@ -108,6 +108,16 @@ TEST_F(SlidingContactTest, ARingingGelShellKeepsItsSlidingContactsAtItsValidated
   EXPECT_EQ(now.min_pins, now.onset_pins);
 }
 
+TEST_F(SlidingContactTest, ARingingGelShellHeldAtTheDefaultStepKeepsItsSlidingContactsOnTheSlidingStep) {
+  // 2 ms until the onset, 1 ms from it on (sim.sliding_timestep_s).
+  RailScenarioConfig c = GelShell(0.002);
+  ASSERT_DOUBLE_EQ(c.sim.SlidingTimestep(), kLightShellValidatedStepS);
+  const SlideForces now = Slide(30.0, c);
+  ASSERT_GE(now.sliding_frames, 10);
+  EXPECT_GT(now.min_ratio, 0.7) << "over " << now.sliding_frames << " frames";
+  EXPECT_EQ(now.min_pins, now.onset_pins);
+}
+
 TEST_F(SlidingContactTest, ARingingGelShellChattersAtTwiceItsValidatedStep) {
   // Measured: down to 0.04 of the onset force, 6 of 19 pins in contact.
   RailScenarioConfig c = GelShell(2.0 * kLightShellValidatedStepS);
