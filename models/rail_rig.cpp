@@ -252,6 +252,11 @@ BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   }
 
   mjcf::Element root = SceneRoot("tactip_rail", spec.sim, spec.contact, -9.81, n_collidable);
+  if (spec.sim.SlidingTimestep() < spec.sim.timestep_s) {
+    root.Comment(fmt::format("sim.sliding_timestep_s: tactip steps {:.6g} s from the gross-slip onset on; plain MuJoCo "
+                             "runs this model at timestep {:.6g} s throughout",
+                             spec.sim.SlidingTimestep(), spec.sim.timestep_s));
+  }
   mjcf::Element& world = root.Add("worldbody");
   if (spec.options.visual_geoms) world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
   AddRailAndObject(world, spec);

@@ -101,8 +101,8 @@ struct SkinConfig {
       "shear_damping_ratio. gel: a gel with a constant loss tangent, gel_loss_tangent, so every mode the shell "
       "forms has a damping ratio of half of it: the damper along the rail follows the mass the shell carries - "
       "its own, plus the held object's share while its contacts stick (rail and incipient scenarios); released "
-      "shear rings on after gross slip. A shell damped below a ratio of 0.5 is validated up to sim.timestep_s = "
-      "0.001 (README 'The pin-lattice skin').",
+      "shear rings on after gross slip. A shell damped below a ratio of 0.5 is validated with a sliding step "
+      "(sim.sliding_timestep_s, from the gross-slip onset on) up to 0.001 s (README 'The pin-lattice skin').",
       Choices{"viscous", "gel"});
     v("gel_loss_tangent", gel_loss_tangent, "",
       "Loss tangent tan(delta) = G''/G' of the gel's shear modulus (shell_damping = gel): the shell's in-plane "

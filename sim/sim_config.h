@@ -40,7 +40,8 @@ struct SimConfig {
 
   /// The step a rail run takes from the gross-slip onset on: timestep_s when sliding_timestep_s
   /// is 0 or not smaller, else the largest whole fraction timestep_s / k that is at most
-  /// sliding_timestep_s, so that frames on the held step's grid stay on the finer one.
+  /// sliding_timestep_s (to a relative 1e-9, which keeps an exact divisor from being pushed to
+  /// the next k by rounding), so that frames on the held step's grid stay on the finer one.
   double SlidingTimestep() const {
     if (sliding_timestep_s <= 0.0 || sliding_timestep_s >= timestep_s) return timestep_s;
     return timestep_s / std::ceil(timestep_s / sliding_timestep_s - 1e-9);
@@ -105,6 +106,11 @@ struct SimConfig {
     if (sliding_timestep_s > 0.0 && sliding_timestep_s < kMinTimestepS) {
       FailRule("sim.sliding_timestep_s", sliding_timestep_s,
                "must be 0 (off) or at least 0.00001 s, the smallest sim.timestep_s");
+    }
+    if (sliding_timestep_s > 0.0 && SlidingTimestep() < kMinTimestepS) {
+      FailRule("sim.sliding_timestep_s", sliding_timestep_s,
+               "gives a sliding step (the largest sim.timestep_s / k within it) below 0.00001 s, the smallest "
+               "sim.timestep_s; use 0 (off) or a value that divides sim.timestep_s");
     }
   }
 };

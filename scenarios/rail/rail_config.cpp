@@ -102,7 +102,8 @@ void CheckSceneSize(const RailScenarioConfig& c) {
 
 // The timestep: below the stability limit of every mode and, for a skin with per-pin shear
 // DOFs, no larger than its validated step. Either refusal suggests the largest step that
-// passes both, rounded down so that it passes as printed.
+// passes both, rounded down so that it passes as printed. A lightly damped shell must slide
+// (SimConfig::SlidingTimestep) at no more than its validated sliding step.
 void CheckTimestep(const RailScenarioConfig& c) {
   if (!c.sim.check_stability) return;
   const StiffMode mode = RailStiffestMode(c.SceneSpec());
@@ -132,9 +133,10 @@ void CheckTimestep(const RailScenarioConfig& c) {
     FailRule("sim.sliding_timestep_s", c.sim.sliding_timestep_s,
              fmt::format("the shell skin damped at a ratio of {:.3g} ({}; below {}) is validated with a step up to {} "
                          "s from the gross-slip onset on (here {} s): at larger steps the released shell's ringing "
-                         "makes the sliding contacts chatter; use sim.sliding_timestep_s <= {} (not 0)",
+                         "makes the sliding contacts chatter; use sim.sliding_timestep_s <= {} (not 0) or "
+                         "sim.timestep_s <= {}",
                          c.skin.ShellDampingRatio(), ratio, kLightShellDampingRatio, FormatAtMost(light),
-                         FormatAtMost(c.sim.SlidingTimestep()), FormatAtMost(light)));
+                         config_detail::FormatReal(c.sim.SlidingTimestep()), FormatAtMost(light), FormatAtMost(light)));
   }
 }
 
@@ -169,12 +171,12 @@ void RailScenarioConfig::ValidateRules() const {
 }
 
 namespace {
-// A lightly damped shell bounds the held step only when the run has no finer sliding step
-// within the shell's validated one.
-double LightShellHeldBound(const RailScenarioConfig& cfg) {
-  const double light = LightShellValidatedSlidingStep(cfg.skin);
-  const double sliding = cfg.sim.sliding_timestep_s;
-  return sliding > 0.0 && sliding <= light * (1.0 + 1e-9) ? std::numeric_limits<double>::infinity() : light;
+// The largest step up to `bound_s` that makes a camera frame a whole number of steps. A
+// relative 1e-9 keeps an exact divisor (2 ms of 10 ms) from being pushed to the next one by
+// rounding; the last ulp is clipped so the step never exceeds the bound.
+double FrameFraction(double bound_s, double frame_s) {
+  const long long steps = std::max(1LL, static_cast<long long>(std::ceil(frame_s / bound_s * (1.0 - 1e-9))));
+  return std::min(frame_s / static_cast<double>(steps), bound_s);
 }
 }  // namespace
 
@@ -188,7 +190,6 @@ TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {
   const std::pair<double, std::string> bounds[] = {
       {stable.timestep_s, "stability"},
       {ShearDofValidatedTimestep(cfg.skin, cfg.contact), "the skin's per-pin shear DOFs (validated step)"},
-      {LightShellHeldBound(cfg), "the lightly damped shell skin (validated step: no sliding step within it)"},
       {cfg.sim.timestep_s, "accuracy (the configured sim.timestep_s)"},
       {0.5 * cfg.contact.timeconst_s, "the contact (contact.timeconst_s / 2)"},
       {frame_s, "one camera frame (sensor.frame_rate_hz)"},
@@ -201,11 +202,17 @@ TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {
       c.binding = what;
     }
   }
-  // A frame is a whole number of steps. A relative 1e-9 keeps an exact divisor (2 ms of
-  // 10 ms) from being pushed to the next one by rounding; the last ulp is clipped so the
-  // step never exceeds the bound.
-  const long long steps = std::max(1LL, static_cast<long long>(std::ceil(frame_s / c.bound_s * (1.0 - 1e-9))));
-  c.timestep_s = std::min(frame_s / static_cast<double>(steps), c.bound_s);
+  c.timestep_s = FrameFraction(c.bound_s, frame_s);
+  // A lightly damped shell must slide within its validated step (CheckTimestep): when the
+  // chosen step would not, the whole run takes it.
+  SimConfig sim = cfg.sim;
+  sim.timestep_s = c.timestep_s;
+  const double light = LightShellValidatedSlidingStep(cfg.skin);
+  if (sim.SlidingTimestep() > light * (1.0 + 1e-9)) {
+    c.bound_s = light;
+    c.binding = "the lightly damped shell skin (its validated sliding step, with no sliding step within it)";
+    c.timestep_s = FrameFraction(c.bound_s, frame_s);
+  }
   return c;
 }
 

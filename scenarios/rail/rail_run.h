@@ -111,7 +111,8 @@ class RailRun {
   void UpdateShellDamping();  // the gel shell's damper from each sensor's stuck contacts
   void ReadContacts();
   void TrackOnset(double t, bool seek_onset);
-  /// From the next step on: sim.sliding_timestep_s, if smaller than the step (once per run).
+  /// From the next step on: SimConfig::SlidingTimestep (a whole fraction of the step), if
+  /// smaller than the step (once per run).
   void SwitchToSlidingStep();
   double StepTime(long long n) const;  // the time at which step n starts (after n steps)
   long long NextFrameStep() const;     // the step nearest frame frame_'s time, not before step_

@@ -20,8 +20,8 @@
 namespace tactip {
 namespace {
 
-// A gel shell damped at `ratio` (loss tangent 2 x ratio) at its validated step; a viscous one
-// at the same ratio.
+// A gel shell damped at `ratio` (loss tangent 2 x ratio), 1 ms throughout (its validated
+// sliding step); a viscous one at the same ratio.
 RailScenarioConfig Gel(double ratio) {
   RailScenarioConfig c;
   c.skin.shell_damping = "gel";
@@ -56,8 +56,14 @@ TEST(ShellDampingTest, TheGelsRatioIsHalfItsLossTangentAndALightShellIsRefusedAb
               "sim.sliding_timestep_s = 0: the shell skin damped at a ratio of 0.08 (skin.gel_loss_tangent / 2; below "
               "0.5) is validated with a step up to 0.001 s from the gross-slip onset on (here 0.002 s): at larger "
               "steps the released shell's ringing makes the sliding contacts chatter; use sim.sliding_timestep_s <= "
-              "0.001 (not 0)");
+              "0.001 (not 0) or sim.timestep_s <= 0.001");
   }
+  // A sliding step above 1 ms still slides at a whole fraction of the step: 2 ms / 2 is
+  // accepted, 2.5 ms / 2 = 1.25 ms refused.
+  coarse.sim.sliding_timestep_s = 0.0015;
+  coarse.ValidateRules();
+  coarse.sim.timestep_s = 0.0025;
+  EXPECT_THROW(coarse.ValidateRules(), InputError);
   // A fixed damper as light is refused alike; from a ratio of 0.5 on a 2 ms slide is fine.
   RailScenarioConfig fixed = Viscous(0.3), firm = Viscous(0.5);
   fixed.sim.timestep_s = firm.sim.timestep_s = 0.002;

@@ -91,8 +91,8 @@ TEST_F(SlidingContactTest, WithMujocosFrictionTargetTheSlidingContactsChatter) {
 }
 
 // The shell skin's gel damper (ratio 0.08): the released shell rings while the object slides.
-// At the light shell's validated step the sliding contacts keep their normal forces; at 2 ms
-// (refused by the config's rules) they chatter, the reason for kLightShellValidatedStepS.
+// At the light shell's validated step the sliding contacts keep their normal forces; sliding
+// at 2 ms (refused by the config's rules) they chatter, the reason for kLightShellValidatedStepS.
 RailScenarioConfig GelShell(double timestep_s) {
   RailScenarioConfig c;
   c.skin.shell_damping = "gel";

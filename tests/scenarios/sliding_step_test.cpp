@@ -110,6 +110,9 @@ TEST_F(SlidingStepTest, TheSlidingStepIsTheLargestWholeFractionOfTheStepWithinIt
   EXPECT_DOUBLE_EQ(c.sim.SlidingTimestep(), 0.001);  // 3 ms / 3
   c.sim.sliding_timestep_s = 0.0009;
   EXPECT_DOUBLE_EQ(c.sim.SlidingTimestep(), 0.00075);  // 3 ms / 4
+  c.sim.timestep_s = 0.006;
+  c.sim.sliding_timestep_s = 0.0012;  // the ratio rounds to just above 5: still 6 ms / 5
+  EXPECT_DOUBLE_EQ(c.sim.SlidingTimestep(), 0.0012);
 }
 
 // Follows the schedule and measures, at each frame, how far the step it was taken at lies
@@ -157,6 +160,16 @@ TEST_F(SlidingStepTest, AStepTooSmallToRunIsRefused) {
     FAIL() << "accepted sim.sliding_timestep_s = 1e-7";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("sim.sliding_timestep_s"), std::string::npos) << e.what();
+  }
+  // Allowed on its own, but the whole fraction of a 15 us step within it would be 7.5 us.
+  c.sim.timestep_s = 1.5e-5;
+  c.sim.sliding_timestep_s = 1e-5;
+  ASSERT_LT(c.sim.SlidingTimestep(), SimConfig::kMinTimestepS);
+  try {
+    c.sim.ValidateRules();
+    FAIL() << "accepted a sliding step of " << c.sim.SlidingTimestep() << " s";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("below 0.00001 s"), std::string::npos) << e.what();
   }
 }
 

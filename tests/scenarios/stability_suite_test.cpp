@@ -174,10 +174,15 @@ TEST(AutoTimestepTest, ALightlyDampedShellGetsItsValidatedStepOnlyWithoutTheSlid
   TimestepChoice t = ChooseTimestep(c);
   EXPECT_NE(t.binding.find("accuracy"), std::string::npos) << t.binding;
   EXPECT_DOUBLE_EQ(t.timestep_s, 0.002);
+  c.sim.sliding_timestep_s = 0.0015;  // slides at 2 ms / 2, as CheckTimestep accepts
+  EXPECT_DOUBLE_EQ(ChooseTimestep(c).timestep_s, 0.002);
   c.sim.sliding_timestep_s = 0.0;  // without it the whole run needs the validated step
   t = ChooseTimestep(c);
   EXPECT_NE(t.binding.find("lightly damped shell"), std::string::npos) << t.binding;
   EXPECT_DOUBLE_EQ(t.timestep_s, kLightShellValidatedStepS);
+  RailScenarioConfig picked = c;
+  picked.sim.timestep_s = t.timestep_s;
+  picked.ValidateRules();  // the step it picked passes
   c.skin.gel_loss_tangent = 1.0;  // a ratio of 0.5: not light
   EXPECT_DOUBLE_EQ(ChooseTimestep(c).timestep_s, 0.002);
 }
