@@ -92,8 +92,8 @@ struct SimConfig {
     v("sliding_timestep_s", sliding_timestep_s, "s",
       "Rail scenarios: at most this step from the gross-slip onset on (the first step in which every contacting pin "
       "slides), when it is smaller than timestep_s; the step taken is the largest whole fraction of timestep_s at "
-      "most this (timestep_s / k), so the camera's frames stay on the steps' grid. The release kicks the pins' normal modes as friction drops to "
-      "kinetic; at 2 ms some sliding contacts then let go for a step (0.1 mm/s: 9 of 20 runs, down to 1 of 19 pins), "
+      "most this (timestep_s / k), so the camera's frames stay on the steps' grid. The release kicks the pins' "
+      "normal modes as friction drops to kinetic; at 2 ms some sliding contacts then let go for a step (0.1 mm/s: 9 of 20 runs, down to 1 of 19 pins), "
       "at 1 ms none does. Everything before the onset is unchanged, and the sliding phase is short, so the cost is "
       "small. 0 keeps timestep_s throughout (the behaviour of datasets written before this key).",
       Bounds::Closed(0.0, 0.01));

@@ -100,6 +100,12 @@ void CheckSceneSize(const RailScenarioConfig& c) {
   FailRule(key, current, what + "; use a skin with fewer pins");
 }
 
+// A lightly damped shell sliding (SimConfig::SlidingTimestep) above its validated sliding step;
+// the relative 1e-9 lets the step that was printed as the limit pass.
+bool SlidesAboveLightShellStep(const SkinConfig& skin, const SimConfig& sim) {
+  return sim.SlidingTimestep() > LightShellValidatedSlidingStep(skin) * (1.0 + 1e-9);
+}
+
 // The timestep: below the stability limit of every mode and, for a skin with per-pin shear
 // DOFs, no larger than its validated step. Either refusal suggests the largest step that
 // passes both, rounded down so that it passes as printed. A lightly damped shell must slide
@@ -127,8 +133,8 @@ void CheckTimestep(const RailScenarioConfig& c) {
                          "{} s: at larger steps its slip events create energy; {}",
                          c.skin.coupling, c.contact.friction, FormatAtMost(validated), advice));
   }
-  const double light = LightShellValidatedSlidingStep(c.skin);
-  if (c.sim.SlidingTimestep() > light * (1.0 + 1e-9)) {
+  if (SlidesAboveLightShellStep(c.skin, c.sim)) {
+    const double light = LightShellValidatedSlidingStep(c.skin);
     const std::string ratio = c.skin.shell_damping == "gel" ? "skin.gel_loss_tangent / 2" : "skin.shear_damping_ratio";
     FailRule("sim.sliding_timestep_s", c.sim.sliding_timestep_s,
              fmt::format("the shell skin damped at a ratio of {:.3g} ({}; below {}) is validated with a step up to {} "
@@ -207,9 +213,8 @@ TimestepChoice ChooseTimestep(const RailScenarioConfig& cfg) {
   // chosen step would not, the whole run takes it.
   SimConfig sim = cfg.sim;
   sim.timestep_s = c.timestep_s;
-  const double light = LightShellValidatedSlidingStep(cfg.skin);
-  if (sim.SlidingTimestep() > light * (1.0 + 1e-9)) {
-    c.bound_s = light;
+  if (SlidesAboveLightShellStep(cfg.skin, sim)) {
+    c.bound_s = LightShellValidatedSlidingStep(cfg.skin);
     c.binding = "the lightly damped shell skin (its validated sliding step, with no sliding step within it)";
     c.timestep_s = FrameFraction(c.bound_s, frame_s);
   }
