@@ -49,7 +49,7 @@ SpeedRow MeasureRailRun(const SpeedScene& scene, const RailScenario& scenario, s
   row.sim_s = s.sim_time_s;
   row.run_wall_s = s.wall_time_s;
   row.profile = inst.profile;
-  row.bare_wall_s = ReplayBareSteps(scenario.model(), inst.ctrl);
+  row.bare_wall_s = ReplayBareSteps(scenario.model(), inst.ctrl, inst.timestep_s).wall_s;
   row.nv = scenario.model().nv();
   row.memory_bytes = SceneMemoryBytes(scenario.model());
   return row;

@@ -32,9 +32,18 @@ long long SceneMemoryBytes(const CompiledModel& model);
 /// Makes MuJoCo time its own stages (a process-wide callback; for speed studies only).
 void EnableMujocoTimers();
 
-/// Steps a fresh mjData of `model` with plain mj_step, setting the actuators' controls from
-/// `ctrl` (nu values per step) before each step; returns the wall time (s). This is MuJoCo
-/// alone on the same model: no friction plane, no friction pass, nothing read out.
-double ReplayBareSteps(const CompiledModel& model, const std::vector<double>& ctrl);
+/// A bare replay: its wall time and the simulated time it covered (s).
+struct BareReplay {
+  double wall_s = 0.0;
+  double sim_s = 0.0;
+};
+
+/// Steps a fresh mjData of a copy of `model` with plain mj_step, setting the actuators'
+/// controls from `ctrl` (nu values per step) and the step from `timestep_s` (one value per
+/// step: a run that refines its step at the gross-slip onset replays the same steps) before
+/// each step. This is MuJoCo alone on the same model: no friction plane, no friction pass,
+/// nothing read out. Throws std::invalid_argument when the two do not hold the same steps.
+BareReplay ReplayBareSteps(const CompiledModel& model, const std::vector<double>& ctrl,
+                           const std::vector<double>& timestep_s);
 
 }  // namespace tactip

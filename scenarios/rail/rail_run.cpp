@@ -135,12 +135,13 @@ void RailRun::InitRecord(RunRecord& rec) {
 }
 
 void RailRun::RecordControls() {
-  // The controls in actuator order (servo_x, servo_z are the scene's only actuators).
+  // The step's length, and the controls in actuator order (servo_x, servo_z are the scene's only actuators).
   std::vector<double>& c = instrument_->ctrl;
   const size_t base = c.size();
   c.resize(base + 2);
   c[base + static_cast<size_t>(im_.servo_x)] = arm_.x_m;
   c[base + static_cast<size_t>(im_.servo_z)] = arm_.z_m;
+  instrument_->timestep_s.push_back(dt_);
 }
 
 void RailRun::Instrument(RunInstrumentation* out) {

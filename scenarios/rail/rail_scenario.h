@@ -54,7 +54,8 @@ struct RailSceneIds;
 /// controls of every step (to replay the same motion with bare mj_step).
 struct RunInstrumentation {
   StepProfile profile;
-  std::vector<double> ctrl;  ///< nu values per step
+  std::vector<double> ctrl;        ///< nu values per step
+  std::vector<double> timestep_s;  ///< each step's length (the sliding step from the gross-slip onset)
 };
 
 /// Runs rail-protocol runs of one configuration. Thread-safe: Run() may be called from

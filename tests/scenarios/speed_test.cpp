@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -60,13 +61,25 @@ TEST_F(SpeedStudyTest, BareReplayRunsTheSameStepsOnTheSameModel) {
   RunRecord rec;
   RunInstrumentation inst;
   const RailRunSummary s = scenario.RunInstrumented(0, 5, rec, inst);
-  const double bare_s = ReplayBareSteps(scenario.model(), inst.ctrl);
-  EXPECT_GT(bare_s, 0.0);
+  ASSERT_FALSE(std::isnan(s.gross_slip_onset_s));
+  // The run refines its step at the gross-slip onset; the replay takes the same steps, so it
+  // covers the run's simulated time (at the held step alone it would fall short).
+  const double held = scenario.model().timestep();
+  ASSERT_EQ(inst.timestep_s.size(), static_cast<size_t>(s.steps));
+  EXPECT_EQ(inst.timestep_s.front(), held);
+  EXPECT_LT(inst.timestep_s.back(), held);
+  const BareReplay bare = ReplayBareSteps(scenario.model(), inst.ctrl, inst.timestep_s);
+  EXPECT_GT(bare.wall_s, 0.0);
+  EXPECT_NEAR(bare.sim_s, s.sim_time_s, 1e-9);
+  EXPECT_GT(static_cast<double>(s.steps) * held - s.sim_time_s, held);
+  // The shared model keeps its step.
+  EXPECT_EQ(scenario.model().timestep(), held);
   // A replay of a different length is refused rather than timed.
   std::vector<double> odd = inst.ctrl;
   odd.pop_back();
-  EXPECT_THROW(ReplayBareSteps(scenario.model(), odd), std::invalid_argument);
-  EXPECT_GT(s.steps, 0);
+  EXPECT_THROW(ReplayBareSteps(scenario.model(), odd, inst.timestep_s), std::invalid_argument);
+  std::vector<double> short_steps(inst.timestep_s.begin(), inst.timestep_s.end() - 1);
+  EXPECT_THROW(ReplayBareSteps(scenario.model(), inst.ctrl, short_steps), std::invalid_argument);
 }
 
 class SpeedCliTest : public ::testing::Test {
