@@ -41,6 +41,7 @@ SignatureAcceptance JudgeSignatures(const std::vector<SignatureRun>& runs) {
       if (r.incipient->visible_lead_s >= kAcceptedLeadS) ++a.visible_lead.passed;
       if (r.incipient->alarm_lead_s >= kAcceptedLeadS) ++a.alarm_lead.passed;
       if (r.incipient->sectors.EastWestFirst()) ++a.east_west_first.passed;
+      if (r.incipient->sectors.EastWestTiedWithNorthSouth()) ++a.east_west_tied;
     }
   }
   // Runs needed from the required shares ("most" = more than half).

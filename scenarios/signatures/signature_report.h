@@ -52,6 +52,9 @@ constexpr double kAcceptedLeadS = 0.5;
 /// incipient runs; first slip east/west in most (more than half) of them.
 struct SignatureAcceptance {
   AcceptanceCount spike_width, visible_lead, alarm_lead, east_west_first;
+  /// Incipient runs whose first frame of slip holds east or west together with south or
+  /// north (not counted as east/west first: the frames cannot order them).
+  int east_west_tied = 0;
 };
 
 /// Counts SignatureAcceptance over `runs`.

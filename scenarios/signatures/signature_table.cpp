@@ -185,8 +185,9 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
   out += SummaryLine("detector alarm before fall, s", Spread(c.alarm_lead, "{:.3f}"), "stopped in time in 17 of 20",
                      ">= 0.5 s in >= 17/20 of runs: " + Verdict(a.alarm_lead));
   out += SummaryLine("alarm pins slip/stuck/free", AlarmPinsSummary(c), "not labelled");
-  out += SummaryLine("first-slipping sector", fmt::format("E/W first in {} of {} runs", a.east_west_first.passed,
-                                                          a.east_west_first.runs),
+  out += SummaryLine("first-slipping sector",
+                     fmt::format("E/W first {} of {}, tied with S/N {}", a.east_west_first.passed,
+                                 a.east_west_first.runs, a.east_west_tied),
                      "E and W first, then S, then N", "E/W in most runs: " + Verdict(a.east_west_first));
   out += SummaryLine("internal/external correlation",
                      c.correlation.empty() ? std::string("n/a (no external markers)") : Spread(c.correlation),

@@ -35,6 +35,10 @@ bool SectorOrder::EastWestFirst() const {
   return !first.empty() && first.find_first_of("SN") == std::string::npos;
 }
 
+bool SectorOrder::EastWestTiedWithNorthSouth() const {
+  return first.find_first_of("EW") != std::string::npos && first.find_first_of("SN") != std::string::npos;
+}
+
 char ImageSector(double du_px, double dv_px) {
   if (du_px == 0.0 && dv_px == 0.0) return '-';
   if (std::abs(du_px) >= std::abs(dv_px)) return du_px > 0.0 ? 'E' : 'W';

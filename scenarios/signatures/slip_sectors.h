@@ -19,6 +19,9 @@ struct SectorOrder {
   std::string order;
   /// True when `first` holds east and/or west only (the hardware's finding).
   bool EastWestFirst() const;
+  /// True when `first` holds east or west together with south or north: they started to
+  /// slip in the same frame, so the frames cannot order them.
+  bool EastWestTiedWithNorthSouth() const;
 };
 
 /// Sector ('E', 'W', 'S' or 'N') of image offset (du, dv) from the contact centre: the

@@ -202,6 +202,7 @@ TEST(SlipSectorsTest, EastFirstRunOrdersTheSectorsByTheirFirstSlippingPin) {
   EXPECT_EQ(o.first, "E");
   EXPECT_EQ(o.order, "E<W<S");
   EXPECT_TRUE(o.EastWestFirst());
+  EXPECT_FALSE(o.EastWestTiedWithNorthSouth());
 }
 
 TEST(SlipSectorsTest, SectorsSlippingInTheSameFrameAreJoinedAndSouthFirstIsNotEastWest) {
@@ -213,6 +214,13 @@ TEST(SlipSectorsTest, SectorsSlippingInTheSameFrameAreJoinedAndSouthFirstIsNotEa
   EXPECT_EQ(o.first, "S=N");
   EXPECT_EQ(o.order, "S=N<E");
   EXPECT_FALSE(o.EastWestFirst());
+  EXPECT_FALSE(o.EastWestTiedWithNorthSouth());
+  // East slipping in the same frame as north and south: a tie, not east/west first.
+  SlipFrom(s, 1, 8);
+  const SectorOrder tied = OrderSlipSectors(s, 0, 30);
+  EXPECT_EQ(tied.first, "E=S=N");
+  EXPECT_FALSE(tied.EastWestFirst());
+  EXPECT_TRUE(tied.EastWestTiedWithNorthSouth());
   // Slip after the window's end is not counted.
   EXPECT_EQ(OrderSlipSectors(s, 0, 8).order, "");
 }
@@ -386,6 +394,14 @@ TEST(SignatureAcceptanceTest, AlarmNeedsSeventeenOfTwentyAndVisibilityNinetyPerc
   EXPECT_FALSE(a.visible_lead.Pass());
   EXPECT_EQ(a.east_west_first.passed, 19);
   EXPECT_EQ(a.east_west_first.min_passed, 11);
+  EXPECT_EQ(a.east_west_tied, 0);
+  runs[1] = IncipientOnly(1.0, 0.5, "W=S");
+  runs[2] = IncipientOnly(1.0, 0.5, "E=W=S=N");
+  a = JudgeSignatures(runs);
+  EXPECT_EQ(a.east_west_first.passed, 17);
+  EXPECT_EQ(a.east_west_tied, 2);
+  EXPECT_NE(FormatSignatureReport(runs, {}).find("E/W first 17 of 20, tied with S/N 2"),
+            std::string::npos);
 }
 
 TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
