@@ -285,6 +285,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   // A triangular spring network with springs k has a 2-D Young's modulus 2k / sqrt 3.
   m.k_link_N_m = std::sqrt(3.0) / 2.0 * m.membrane_N_m;
   m.k_couple_N_m = m.k_rock_N_m > 0.0 ? 1.0 / (1.0 / m.k_link_N_m + 2.0 / m.k_rock_N_m) : m.k_link_N_m;
+  m.central_links = skin.coupling == "membrane" && skin.membrane_links == "central";
   m.pin_mass_kg = skin.pin_mass_g * 1e-3;
   const double alpha_max = reach / R;
   m.shell_mass_kg = kSkinDensity * t * 2.0 * std::numbers::pi * R * R * (1.0 - std::cos(alpha_max));
@@ -320,7 +321,15 @@ double SkinMechanics::StiffestOmega() const {
 }
 
 double SkinMechanics::StiffestShearOmega() const {
-  return std::sqrt((k_tip_N_m + k_rim_pin_N_m + 2.0 * max_degree * k_couple_N_m) / pin_mass_kg);
+  // A link's row sum: isotropic, 2 k on each component; central, k |e_y| (|e_y| + |e_z|) on
+  // both of its pins' DOFs, at most (1 + sqrt 2) k, with k at most k_link (a link along a ring).
+  const double per_link = central_links ? (1.0 + std::numbers::sqrt2) * k_link_N_m : 2.0 * k_couple_N_m;
+  return std::sqrt((k_tip_N_m + k_rim_pin_N_m + max_degree * per_link) / pin_mass_kg);
+}
+
+double SkinMechanics::CentralLinkStiffness(double radial_share) const {
+  if (!(k_rock_N_m > 0.0)) return k_link_N_m;
+  return 1.0 / (1.0 / k_link_N_m + 2.0 * radial_share * radial_share / k_rock_N_m);
 }
 
 namespace {
@@ -455,6 +464,30 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
   }
 }
 
+// A central membrane link (skin.membrane_links = central): one spring along the link's
+// direction e in the sensor's y-z plane, L = e . (u_0 - u_1) over the two pins' shear joints,
+// whose stiffness takes the ridges' rocking by the link's radial share (the cosine between e
+// and the radial direction at the link's midpoint; a link through the apex is radial).
+mjcf::Element CentralLinkTendon(const PinBodyPlan& plan, const PinLattice& lattice, const std::array<int, 2>& e) {
+  const auto& n0 = lattice.pins[e[0]].normal;
+  const auto& n1 = lattice.pins[e[1]].normal;
+  const double ey = n1[1] - n0[1], ez = n1[2] - n0[2];
+  const double length = std::hypot(ey, ez);
+  const double ry = n0[1] + n1[1], rz = n0[2] + n1[2];
+  const double r = std::hypot(ry, rz);
+  const double radial_share = r < 1e-9 * length ? 1.0 : std::abs(ey * ry + ez * rz) / (length * r);
+  const SkinNames& names = plan.names;
+  mjcf::Element t("fixed");
+  t.Set("name", names.Part(fmt::format("membrane_{}_{}", e[0], e[1])))
+      .Set("stiffness", plan.mech.CentralLinkStiffness(radial_share));
+  for (int side = 0; side < 2; ++side) {
+    const double sign = side == 0 ? 1.0 : -1.0;
+    t.Add("joint").Set("joint", names.PinShearJoint(e[side], 'y')).Set("coef", sign * ey / length);
+    t.Add("joint").Set("joint", names.PinShearJoint(e[side], 'z')).Set("coef", sign * ez / length);
+  }
+  return t;
+}
+
 // Skin bending couples the normal motion of neighbouring pins; in a membrane lattice the
 // membrane (through the ridges) couples their shear motion. Each spring between two DOFs
 // (or from one DOF to the anchored skin) is a fixed tendon.
@@ -477,6 +510,10 @@ std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLat
     spring(fmt::format("bend_{}_{}", e[0], e[1]), names.PinJoint(e[0]), m0, names.PinJoint(e[1]), m1,
            plan.mech.k_bend_N_m);
     if (!membrane) continue;
+    if (plan.mech.central_links) {
+      tendons.push_back(CentralLinkTendon(plan, lattice, e));
+      continue;
+    }
     for (char axis : {'y', 'z'}) {
       spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), names.PinShearJoint(e[0], axis), true,
              names.PinShearJoint(e[1], axis), true, plan.mech.k_couple_N_m);

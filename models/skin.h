@@ -38,6 +38,7 @@ struct SkinConfig {
   double contact_radius_mm = 1.5;   ///< radius of the spherical contact patch at each pin
   std::string coupling = "shell";   ///< how pins are coupled through the skin: shell, membrane or none
   std::string rim = "free";         ///< the skin beyond the pattern: free, or clamped at the dome's base
+  std::string membrane_links = "isotropic"; ///< membrane lattice: links pull on both in-plane components, or along themselves
   std::string pattern = "smooth";   ///< smooth, fingerprint-v1, fingerprint-v2
   double ridge_spacing_mm = 3.0;    ///< fingerprint: radial step between ridge rings (arc length)
   double ridge_height_mm = 2.0;     ///< fingerprint: ridge height above the skin (v2: peak-to-trough)
@@ -128,6 +129,15 @@ struct SkinConfig {
       "(kappa ln(b/a) - (b^2 - a^2) / (kappa (a^2 + b^2))), kappa = (3 - nu) / (1 + nu): added to the shell's "
       "shear springs (shell) or shared by the outermost ring's pins (membrane). See README 'The skin's rim'.",
       Choices{"free", "clamped"});
+    v("membrane_links", membrane_links, "",
+      "How a membrane lattice's link (coupling membrane; the shell and none ignore this) pulls on its two pins' "
+      "contact points. isotropic: on both in-plane components, k_couple = link in series with two ridges. "
+      "central: along the link only, as the triangular spring network that k_link = (sqrt 3 / 2) E t is derived "
+      "from; a ridge rocks only across itself, so the ridges enter by the link's radial share c: k = 1 / (1 / "
+      "k_link + 2 c^2 / k_rock) - k_couple for a link between rings, k_link along a ring. At a 0.25 ms step "
+      "it puts v2's first slipping pins on the east/west sides (README 'Membrane links'); opt-in, refused by "
+      "'validate contact' (its exact solution has isotropic links).",
+      Choices{"isotropic", "central"});
     v("pattern", pattern, "",
       "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "
       "ridge rings with the pins extending into them (they pivot: the inner marker and the outer contact point "
@@ -323,6 +333,7 @@ struct SkinMechanics {
   double tip_damping_Ns_m = 0.0;    ///< shear damping per pin DOF
   double marker_rock_factor = 0.0;  ///< inner marker = contact point - this * ridge deflection
   int max_degree = 6;               ///< most neighbours of any pin
+  bool central_links = false;       ///< membrane lattice: links act along themselves (skin.membrane_links)
   // The clamped rim (skin.rim = clamped; set by From(skin, lattice), else zero):
   double k_rim_N_m = 0.0;           ///< the skin annulus against a translation of the whole pattern (RimAnchor)
   double k_rim_pin_N_m = 0.0;       ///< membrane lattice: an outer-ring pin's share, in series with its ridge
@@ -342,6 +353,10 @@ struct SkinMechanics {
   double TipStiffness(int ring) const { return ring == rim_ring ? k_tip_N_m + k_rim_pin_N_m : k_tip_N_m; }
   /// Highest shear-mode frequency of a membrane lattice (Gershgorin bound), rad/s.
   double StiffestShearOmega() const;
+  /// A central link's stiffness along itself (skin.membrane_links = central), N/m: the
+  /// membrane spring in series with the two ridges' rocking, which takes the link's radial
+  /// share `radial_share` (cosine between the link and the radial direction, 0..1).
+  double CentralLinkStiffness(double radial_share) const;
   /// Shear damping per pin DOF of a membrane/uncoupled lattice at this timestep: the
   /// physical value (shear_damping_ratio on k_tip), raised where the stiffest shear mode
   /// would otherwise be unstable (tendon springs are integrated explicitly).

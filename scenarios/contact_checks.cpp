@@ -253,6 +253,11 @@ void CheckDomeSkin(const SkinConfig& skin) {
   if (skin.coupling != "membrane") {
     throw InputError("dome check: skin.coupling = '" + skin.coupling + "': needs the membrane-coupled lattice");
   }
+  if (skin.membrane_links != "isotropic") {
+    throw InputError("dome check: skin.membrane_links = '" + skin.membrane_links +
+                     "': the lattice's exact quasi-static solution couples both in-plane components of a link "
+                     "(isotropic links)");
+  }
 }
 
 namespace {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -357,6 +359,103 @@ TEST_F(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormal
   for (const auto& e : lat.neighbours) live_edges += (coll[e[0]] || coll[e[1]]) ? 1 : 0;
   EXPECT_EQ(membrane, 2 * static_cast<int>(lat.neighbours.size()));
   EXPECT_EQ(bend, live_edges);
+}
+
+// skin.membrane_links = central: one spring per link, along the link in the y-z plane,
+// taking the ridges' rocking by the link's radial share.
+TEST_F(FingerprintSkinPartTest, CentralLinksPullAlongThemselvesWithTheRidgesByTheirRadialShare) {
+  SkinConfig v2 = PresetSkin("fingerprint-v2");
+  v2.membrane_links = "central";
+  const PinLattice lat = PinLattice::Build(v2);
+  const std::vector<bool> coll(lat.size(), true);
+  const SkinPart part = BuildSkin(v2, ContactConfig{}, lat, coll, 2.5e-4);
+  const SkinMechanics m = SkinMechanics::From(v2, lat);
+  ASSERT_TRUE(m.central_links);
+  ASSERT_GT(m.k_rock_N_m, 0.0);
+  std::map<std::string, const mjcf::Element*> by_name;
+  for (const auto& t : part.tendons) by_name[t.Get("name")] = &t;
+  int radial = 0, hoop = 0, aslant = 0;
+  for (const auto& e : lat.neighbours) {
+    const auto it = by_name.find(fmt::format("membrane_{}_{}", e[0], e[1]));
+    ASSERT_NE(it, by_name.end()) << "edge " << e[0] << "-" << e[1];
+    const mjcf::Element& t = *it->second;
+    const auto& joints = t.children();
+    ASSERT_EQ(joints.size(), 4u);
+    const SkinNames names;
+    EXPECT_EQ(joints[0].Get("joint"), names.PinShearJoint(e[0], 'y'));
+    EXPECT_EQ(joints[1].Get("joint"), names.PinShearJoint(e[0], 'z'));
+    EXPECT_EQ(joints[2].Get("joint"), names.PinShearJoint(e[1], 'y'));
+    EXPECT_EQ(joints[3].Get("joint"), names.PinShearJoint(e[1], 'z'));
+    const double cy = std::stod(joints[0].Get("coef")), cz = std::stod(joints[1].Get("coef"));
+    EXPECT_NEAR(std::stod(joints[2].Get("coef")), -cy, 1e-15);
+    EXPECT_NEAR(std::stod(joints[3].Get("coef")), -cz, 1e-15);
+    EXPECT_NEAR(std::hypot(cy, cz), 1.0, 1e-12);
+    // Along the link: a pin displaced across the link does not stretch it.
+    const auto& n0 = lat.pins[e[0]].normal;
+    const auto& n1 = lat.pins[e[1]].normal;
+    const double ly = n1[1] - n0[1], lz = n1[2] - n0[2];
+    EXPECT_NEAR(cy * lz - cz * ly, 0.0, 1e-12 * std::hypot(ly, lz));
+    const double k = std::stod(t.Get("stiffness"));
+    const PinGeometry& a = lat.pins[e[0]];
+    const PinGeometry& b = lat.pins[e[1]];
+    if (a.ring == 0) {
+      // From the apex: straight out, through both ridges, as the isotropic coupling.
+      EXPECT_NEAR(k, m.k_couple_N_m, 1e-9 * k);
+      ++radial;
+    } else if (a.ring == b.ring) {
+      // Neighbours on one ring: along the ridge, which does not rock along itself.
+      EXPECT_NEAR(k, m.k_link_N_m, 1e-9 * k);
+      ++hoop;
+    } else {
+      // Between rings: radial (k_couple) where the two pins share an azimuth, stiffer where
+      // the link runs aslant.
+      EXPECT_GE(k, m.k_couple_N_m * (1.0 - 1e-9));
+      EXPECT_LT(k, m.k_link_N_m);
+      aslant += k > m.k_couple_N_m * (1.0 + 1e-6) ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(radial, v2.pins_per_ring);
+  EXPECT_GT(hoop, 0);
+  EXPECT_GT(aslant, 0);
+  EXPECT_EQ(part.tendons.size() - lat.neighbours.size(),
+            static_cast<size_t>(std::count_if(part.tendons.begin(), part.tendons.end(), [](const mjcf::Element& t) {
+              return t.Get("name").rfind("bend_", 0) == 0;
+            })));
+  // The stiffest shear mode's bound covers every pin's row of the stiffness matrix.
+  std::map<std::string, double> row;
+  for (const auto& t : part.tendons) {
+    if (t.Get("name").rfind("membrane_", 0) != 0) continue;
+    double sum = 0.0;
+    for (const auto& j : t.children()) sum += std::abs(std::stod(j.Get("coef")));
+    for (const auto& j : t.children()) row[j.Get("joint")] += std::stod(t.Get("stiffness")) * std::abs(std::stod(j.Get("coef"))) * sum;
+  }
+  double widest = 0.0;
+  for (const auto& pin : lat.pins) {
+    for (char axis : {'y', 'z'}) {
+      widest = std::max(widest, m.TipStiffness(pin.ring) + row[SkinNames{}.PinShearJoint(pin.index, axis)]);
+    }
+  }
+  const double bound = m.StiffestShearOmega() * m.StiffestShearOmega() * m.pin_mass_kg;
+  EXPECT_GE(bound, widest);
+}
+
+TEST(FingerprintMechanicsTest, CentralLinkStiffnessIsTheLinkInSeriesWithTheRidgesRadialShare) {
+  const SkinConfig v2 = PresetSkin("fingerprint-v2");
+  const SkinMechanics m = SkinMechanics::From(v2, PinLattice::Build(v2));
+  EXPECT_FALSE(m.central_links) << "isotropic links by default";
+  EXPECT_NEAR(m.CentralLinkStiffness(1.0), m.k_couple_N_m, 1e-9 * m.k_couple_N_m);
+  EXPECT_NEAR(m.CentralLinkStiffness(0.0), m.k_link_N_m, 1e-9 * m.k_link_N_m);
+  EXPECT_NEAR(1.0 / m.CentralLinkStiffness(0.5), 1.0 / m.k_link_N_m + 0.5 / m.k_rock_N_m, 1e-12);
+  // Without ridges (the smooth pattern in a membrane lattice) a link is the membrane spring.
+  SkinConfig smooth;
+  smooth.coupling = "membrane";
+  smooth.membrane_links = "central";
+  const SkinMechanics s = SkinMechanics::From(smooth, PinLattice::Build(smooth));
+  EXPECT_TRUE(s.central_links);
+  EXPECT_EQ(s.CentralLinkStiffness(1.0), s.k_link_N_m);
+  // Only a membrane lattice has links.
+  smooth.coupling = "shell";
+  EXPECT_FALSE(SkinMechanics::From(smooth, PinLattice::Build(smooth)).central_links);
 }
 
 TEST_F(FingerprintSkinPartTest, ShellCouplingKeepsDofsOnEveryPinAndHasNoMembraneSprings) {

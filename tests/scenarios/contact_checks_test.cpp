@@ -350,5 +350,27 @@ TEST_F(ValidateContactCliTest, BrushCheckUsesTheSkinPresetsLattice) {
   EXPECT_NE(r.err.find("pressing an uncoupled fingerprint-v1 lattice"), std::string::npos) << r.err;
 }
 
+// The dome check's exact quasi-static solution couples both in-plane components of every
+// link, so a lattice of central links is refused, naming the key, before anything runs.
+TEST(DomeCheckTest, CentralMembraneLinksAreRefusedNamingTheKey) {
+  SkinConfig skin;
+  skin.coupling = "membrane";
+  EXPECT_NO_THROW(CheckDomeSkin(skin));
+  skin.membrane_links = "central";
+  try {
+    CheckDomeSkin(skin);
+    ADD_FAILURE() << "central links accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("skin.membrane_links = 'central'"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(ValidateContactCliTest, CentralMembraneLinksAreRefusedInOneLine) {
+  const testing::CliResult r =
+      Run("validate contact --skin fingerprint-v2 --set skin.membrane_links=central");
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("skin.membrane_links = 'central'"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace tactip
