@@ -298,6 +298,28 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   return m;
 }
 
+namespace {
+// Widest row sum of a central-link lattice's shear stiffness matrix: a link (e_y, e_z, k)
+// adds k |e_a| (2 |e_y| + 2 |e_z|) to the row of each of its pins' axes a (its tendon's four
+// joints), on top of the pin's own shear spring (Gershgorin's bound on the stiffest mode).
+double CentralRowMax(const SkinMechanics& m, const PinLattice& lattice) {
+  std::vector<std::array<double, 2>> row(lattice.size(), {0.0, 0.0});
+  for (const auto& e : lattice.neighbours) {
+    const SkinMechanics::CentralLink l = m.CentralLinkBetween(lattice.pins[e[0]], lattice.pins[e[1]]);
+    const double both = 2.0 * (std::abs(l.ey) + std::abs(l.ez));
+    for (int pin : e) {
+      row[pin][0] += l.k_N_m * std::abs(l.ey) * both;
+      row[pin][1] += l.k_N_m * std::abs(l.ez) * both;
+    }
+  }
+  double widest = 0.0;
+  for (const auto& pin : lattice.pins) {
+    widest = std::max(widest, m.TipStiffness(pin.ring) + std::max(row[pin.index][0], row[pin.index][1]));
+  }
+  return widest;
+}
+}  // namespace
+
 SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& lattice) {
   SkinMechanics m = From(skin, lattice.size());
   std::vector<int> degree(lattice.size(), 0);
@@ -313,6 +335,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& latt
     const double share = rim.PerPinN_m();
     m.k_rim_pin_N_m = m.k_rock_N_m > 0.0 ? Series(share, m.k_rock_N_m) : share;
   }
+  if (m.central_links) m.central_row_max_N_m = CentralRowMax(m, lattice);
   return m;
 }
 
@@ -321,15 +344,33 @@ double SkinMechanics::StiffestOmega() const {
 }
 
 double SkinMechanics::StiffestShearOmega() const {
-  // A link's row sum: isotropic, 2 k on each component; central, k |e_y| (|e_y| + |e_z|) on
-  // both of its pins' DOFs, at most (1 + sqrt 2) k, with k at most k_link (a link along a ring).
-  const double per_link = central_links ? (1.0 + std::numbers::sqrt2) * k_link_N_m : 2.0 * k_couple_N_m;
-  return std::sqrt((k_tip_N_m + k_rim_pin_N_m + max_degree * per_link) / pin_mass_kg);
+  // Isotropic links: each adds 2 k_couple to its pins' rows. Central links: the widest row of
+  // the lattice itself (From(skin, lattice)), or, without the lattice, every link at its
+  // largest row sum (1 + sqrt 2) k_link.
+  if (central_links) {
+    const double row = central_row_max_N_m > 0.0
+                           ? central_row_max_N_m
+                           : k_tip_N_m + k_rim_pin_N_m + max_degree * (1.0 + std::numbers::sqrt2) * k_link_N_m;
+    return std::sqrt(row / pin_mass_kg);
+  }
+  return std::sqrt((k_tip_N_m + k_rim_pin_N_m + 2.0 * max_degree * k_couple_N_m) / pin_mass_kg);
 }
 
 double SkinMechanics::CentralLinkStiffness(double radial_share) const {
   if (!(k_rock_N_m > 0.0)) return k_link_N_m;
   return 1.0 / (1.0 / k_link_N_m + 2.0 * radial_share * radial_share / k_rock_N_m);
+}
+
+SkinMechanics::CentralLink SkinMechanics::CentralLinkBetween(const PinGeometry& a, const PinGeometry& b) const {
+  // Pins sit on the dome along their normals, so the normals' difference is the link's
+  // direction and their sum the radial direction at its midpoint (a link through the apex
+  // is radial).
+  const double ey = b.normal[1] - a.normal[1], ez = b.normal[2] - a.normal[2];
+  const double length = std::hypot(ey, ez);
+  const double ry = a.normal[1] + b.normal[1], rz = a.normal[2] + b.normal[2];
+  const double r = std::hypot(ry, rz);
+  const double radial_share = r < 1e-9 * length ? 1.0 : std::abs(ey * ry + ez * rz) / (length * r);
+  return {ey / length, ez / length, CentralLinkStiffness(radial_share)};
 }
 
 namespace {
@@ -466,24 +507,17 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
 
 // A central membrane link (skin.membrane_links = central): one spring along the link's
 // direction e in the sensor's y-z plane, L = e . (u_0 - u_1) over the two pins' shear joints,
-// whose stiffness takes the ridges' rocking by the link's radial share (the cosine between e
-// and the radial direction at the link's midpoint; a link through the apex is radial).
+// whose stiffness takes the ridges' rocking by the link's radial share
+// (SkinMechanics::CentralLinkBetween).
 mjcf::Element CentralLinkTendon(const PinBodyPlan& plan, const PinLattice& lattice, const std::array<int, 2>& e) {
-  const auto& n0 = lattice.pins[e[0]].normal;
-  const auto& n1 = lattice.pins[e[1]].normal;
-  const double ey = n1[1] - n0[1], ez = n1[2] - n0[2];
-  const double length = std::hypot(ey, ez);
-  const double ry = n0[1] + n1[1], rz = n0[2] + n1[2];
-  const double r = std::hypot(ry, rz);
-  const double radial_share = r < 1e-9 * length ? 1.0 : std::abs(ey * ry + ez * rz) / (length * r);
+  const SkinMechanics::CentralLink l = plan.mech.CentralLinkBetween(lattice.pins[e[0]], lattice.pins[e[1]]);
   const SkinNames& names = plan.names;
   mjcf::Element t("fixed");
-  t.Set("name", names.Part(fmt::format("membrane_{}_{}", e[0], e[1])))
-      .Set("stiffness", plan.mech.CentralLinkStiffness(radial_share));
+  t.Set("name", names.Part(fmt::format("membrane_{}_{}", e[0], e[1]))).Set("stiffness", l.k_N_m);
   for (int side = 0; side < 2; ++side) {
     const double sign = side == 0 ? 1.0 : -1.0;
-    t.Add("joint").Set("joint", names.PinShearJoint(e[side], 'y')).Set("coef", sign * ey / length);
-    t.Add("joint").Set("joint", names.PinShearJoint(e[side], 'z')).Set("coef", sign * ez / length);
+    t.Add("joint").Set("joint", names.PinShearJoint(e[side], 'y')).Set("coef", sign * l.ey);
+    t.Add("joint").Set("joint", names.PinShearJoint(e[side], 'z')).Set("coef", sign * l.ez);
   }
   return t;
 }

@@ -134,7 +134,7 @@ struct SkinConfig {
       "contact points. isotropic: on both in-plane components, k_couple = link in series with two ridges. "
       "central: along the link only, as the triangular spring network that k_link = (sqrt 3 / 2) E t is derived "
       "from; a ridge rocks only across itself, so the ridges enter by the link's radial share c: k = 1 / (1 / "
-      "k_link + 2 c^2 / k_rock) - k_couple for a link between rings, k_link along a ring. At a 0.25 ms step "
+      "k_link + 2 c^2 / k_rock) - k_couple for a link between rings, k_link along a ring. At a step of 0.25 ms or finer "
       "it puts v2's first slipping pins on the east/west sides (README 'Membrane links'); opt-in, refused by "
       "'validate contact' (its exact solution has isotropic links).",
       Choices{"isotropic", "central"});
@@ -334,6 +334,7 @@ struct SkinMechanics {
   double marker_rock_factor = 0.0;  ///< inner marker = contact point - this * ridge deflection
   int max_degree = 6;               ///< most neighbours of any pin
   bool central_links = false;       ///< membrane lattice: links act along themselves (skin.membrane_links)
+  double central_row_max_N_m = 0.0; ///< central links: widest row sum of the shear stiffness matrix (From(skin, lattice))
   // The clamped rim (skin.rim = clamped; set by From(skin, lattice), else zero):
   double k_rim_N_m = 0.0;           ///< the skin annulus against a translation of the whole pattern (RimAnchor)
   double k_rim_pin_N_m = 0.0;       ///< membrane lattice: an outer-ring pin's share, in series with its ridge
@@ -357,6 +358,12 @@ struct SkinMechanics {
   /// membrane spring in series with the two ridges' rocking, which takes the link's radial
   /// share `radial_share` (cosine between the link and the radial direction, 0..1).
   double CentralLinkStiffness(double radial_share) const;
+  /// A central link between two pins: its unit direction (y, z) in the sensor's plane and its
+  /// stiffness along it.
+  struct CentralLink {
+    double ey = 0.0, ez = 0.0, k_N_m = 0.0;
+  };
+  CentralLink CentralLinkBetween(const PinGeometry& a, const PinGeometry& b) const;
   /// Shear damping per pin DOF of a membrane/uncoupled lattice at this timestep: the
   /// physical value (shear_damping_ratio on k_tip), raised where the stiffest shear mode
   /// would otherwise be unstable (tendon springs are integrated explicitly).

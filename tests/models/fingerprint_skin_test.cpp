@@ -435,8 +435,15 @@ TEST_F(FingerprintSkinPartTest, CentralLinksPullAlongThemselvesWithTheRidgesByTh
       widest = std::max(widest, m.TipStiffness(pin.ring) + row[SkinNames{}.PinShearJoint(pin.index, axis)]);
     }
   }
+  // The stiffest shear mode's bound is that widest row (Gershgorin), not every link at k_link.
   const double bound = m.StiffestShearOmega() * m.StiffestShearOmega() * m.pin_mass_kg;
-  EXPECT_GE(bound, widest);
+  EXPECT_NEAR(bound, widest, 1e-9 * widest);
+  const double every_link_at_k_link =
+      m.TipStiffness(m.rim_ring) + m.max_degree * (1.0 + std::numbers::sqrt2) * m.k_link_N_m;
+  EXPECT_LT(bound, every_link_at_k_link);
+  // Without the lattice (SkinMechanics::From(skin, n)) the bound falls back to that.
+  const SkinMechanics no_lattice = SkinMechanics::From(v2, lat.size());
+  EXPECT_GE(no_lattice.StiffestShearOmega(), m.StiffestShearOmega());
 }
 
 TEST(FingerprintMechanicsTest, CentralLinkStiffnessIsTheLinkInSeriesWithTheRidgesRadialShare) {
