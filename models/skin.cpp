@@ -299,9 +299,10 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
 }
 
 namespace {
-// Widest row sum of a central-link lattice's shear stiffness matrix: a link (e_y, e_z, k)
-// adds k |e_a| (2 |e_y| + 2 |e_z|) to the row of each of its pins' axes a (its tendon's four
-// joints), on top of the pin's own shear spring (Gershgorin's bound on the stiffest mode).
+// Widest row sum of a central-link lattice's shear stiffness matrix, each link's entries
+// added by magnitude: a link (e_y, e_z, k) adds k |e_a| (2 |e_y| + 2 |e_z|) to the row of
+// each of its pins' axes a (its tendon's four joints), on top of the pin's own shear spring.
+// At or above the matrix's own widest row, so a Gershgorin bound on the stiffest mode.
 double CentralRowMax(const SkinMechanics& m, const PinLattice& lattice) {
   std::vector<std::array<double, 2>> row(lattice.size(), {0.0, 0.0});
   for (const auto& e : lattice.neighbours) {

@@ -134,9 +134,9 @@ struct SkinConfig {
       "contact points. isotropic: on both in-plane components, k_couple = link in series with two ridges. "
       "central: along the link only, as the triangular spring network that k_link = (sqrt 3 / 2) E t is derived "
       "from; a ridge rocks only across itself, so the ridges enter by the link's radial share c: k = 1 / (1 / "
-      "k_link + 2 c^2 / k_rock) - k_couple for a link between rings, k_link along a ring. At a step of 0.25 ms or finer "
-      "it puts v2's first slipping pins on the east/west sides (README 'Membrane links'); opt-in, refused by "
-      "'validate contact' (its exact solution has isotropic links).",
+      "k_link + 2 c^2 / k_rock), which is k_couple for a radial link, k_link along a ring. At a step of 0.25 ms "
+      "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.3 mm/s (README 'Membrane "
+      "links'); opt-in, refused by 'validate contact' (its exact solution has isotropic links).",
       Choices{"isotropic", "central"});
     v("pattern", pattern, "",
       "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "

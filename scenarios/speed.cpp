@@ -105,7 +105,8 @@ std::string FormatSpeedTable(const std::vector<SpeedRow>& rows) {
                        1e6 * p.solve_s / n, 1e6 * p.friction_pass_s / n, 1e6 * p.integrate_s / n, 1e6 * ours);
   }
   out += "(RTF: simulated seconds per wall second. run: the whole scenario; physics: its steps alone; bare: the same "
-         "controls with plain mj_step on the exported model, which has no friction plane or pass. overhead: the "
+         "controls and steps (the sliding step from the onset) with plain mj_step on the exported model, which has no "
+         "friction plane or pass. overhead: the "
          "scenario's own per-step work (contact read-out, labels, friction switching, camera, health, recording) "
          "over its physics steps. step1 includes kinematics, collision, making and projecting the constraints.)\n";
   return out;

@@ -30,7 +30,7 @@ struct SpeedRow {
   SpeedScene scene;
   double sim_s = 0.0;        ///< simulated time of the run
   double run_wall_s = 0.0;   ///< wall time of the whole run (physics and the scenario's work)
-  double bare_wall_s = 0.0;  ///< the same steps with bare mj_step on the exported model
+  double bare_wall_s = 0.0;  ///< the same steps (held, then sliding) with bare mj_step on the exported model
   StepProfile profile;       ///< the run's physics steps, stage by stage
   int nv = 0;                ///< dofs
   long long memory_bytes = 0;///< model + one mjData
