@@ -59,6 +59,7 @@ void SensorRecord::CheckShapes(size_t t, const std::string& run_who) const {
   CheckCount(who, "normal_N", normal_N.size(), t * n, "T*N", dims);
   CheckCount(who, "tangential_N", tangential_N.size(), t * n * 2, "T*N*2", dims);
   CheckCount(who, "incipient", incipient.size(), t, "T", dims);
+  if (!pin_first_slip_s.empty()) CheckCount(who, "pin_first_slip_s", pin_first_slip_s.size(), n, "N", dims);
   if (!external_px.empty() || !external_m.empty()) {
     CheckCount(who, "external_px", external_px.size(), t * n * 2, "T*N*2", dims);
     CheckCount(who, "external_m", external_m.size(), t * n * 3, "T*N*3", dims);

@@ -45,6 +45,10 @@ struct SensorRecord {
   std::vector<std::uint8_t> pin_slip;   ///< (T,N) 1 = this pin's contact is sliding
   std::vector<std::uint8_t> pin_contact;///< (T,N) 1 = this pin touches the stimulus
   std::vector<std::uint8_t> incipient;  ///< (T) 1 = partial slip: some contacting pins slide, others stick
+  /// (N) per pin: the time of the first physics step, from the retraction start up to the
+  /// gross-slip onset, at which it is labelled slipping (NaN: not in that window); empty when
+  /// not recorded (files from before it, scenarios without a retraction).
+  std::vector<double> pin_first_slip_s;
   std::vector<float> external_px;       ///< (T,N,2) outer contact points in the external camera, or empty
   std::vector<float> external_m;        ///< (T,N,3) true outer contact points, sensor frame, m, or empty
   std::vector<float> normal_N;          ///< (T,N) normal force at each pin, N

@@ -116,6 +116,9 @@ void WriteSensor(hid_t sensors, const SensorRecord& s, hsize_t t, const std::str
     WriteArray(labels.get(), "pin_slip", {t, n}, s.pin_slip, "1", at + "/labels", err);
     WriteArray(labels.get(), "pin_contact", {t, n}, s.pin_contact, "1", at + "/labels", err);
     WriteArray(labels.get(), "incipient", {t}, s.incipient, "1", at + "/labels", err);
+    if (!s.pin_first_slip_s.empty()) {
+      WriteArray(labels.get(), "pin_first_slip_s", {n}, s.pin_first_slip_s, "s", at + "/labels", err);
+    }
   }
   if (!s.external_px.empty()) {
     const Hid ext = CreateGroup(g, "external", at + "/external", err);

@@ -35,6 +35,16 @@ void CheckFinite(const RunRecord& run, const std::string& source, const std::str
   }
 }
 
+/// Refuses the first infinite value of a (N) per-pin time array (NaN means "never").
+void CheckTimesOrNaN(const RunRecord& run, const std::string& source, const std::string& array,
+                     const std::vector<double>& values) {
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (std::isinf(values[i])) {
+      Refuse(run, source, array, fmt::format("is {} at pin {} (must be a finite time or NaN)", values[i], i));
+    }
+  }
+}
+
 /// Refuses the first value other than 0 or 1 of a (T, N) flag array.
 void CheckFlags(const RunRecord& run, const std::string& source, const std::string& array,
                 const std::vector<std::uint8_t>& flags, size_t n) {
@@ -69,6 +79,7 @@ void CheckRunValues(const RunRecord& run, const std::string& source, int layout_
     CheckFinite(run, source, at + "external/pos_px", s.external_px, 2, n);
     CheckFinite(run, source, at + "external/pos_m", s.external_m, 3, n);
     CheckFinite(run, source, at + "pins/detected_px", s.detected_px, 2, n);
+    CheckTimesOrNaN(run, source, at + "labels/pin_first_slip_s", s.pin_first_slip_s);
     CheckFlags(run, source, at + "pins/valid", s.valid, n);
     CheckFlags(run, source, at + "pins/detected_valid", s.detected_valid, n);
   }

@@ -163,11 +163,15 @@ void RunGroupReader::ReadSensorArrays(SensorRecord& s, hsize_t t) const {
   s.normal_N = ReadArray<float>(at + "contact/normal_N", {t, n});
   s.tangential_N = ReadArray<float>(at + "contact/tangential_N", {t, n, 2});
   // Optional arrays: partial-slip labels (absent in files from before they existed; then
-  // derived from the per-pin labels) and the external camera (transparent rigs only).
+  // derived from the per-pin labels), the pins' first slips and the external camera
+  // (transparent rigs only).
   if (HasLink(at + "labels/incipient")) {
     s.incipient = ReadArray<std::uint8_t>(at + "labels/incipient", {t});
   } else {
     s.incipient = PartialSlipLabels(s.pin_contact, s.pin_slip, s.n_pins);
+  }
+  if (HasLink(at + "labels/pin_first_slip_s")) {
+    s.pin_first_slip_s = ReadArray<double>(at + "labels/pin_first_slip_s", {n});
   }
   if (HasLink(at + "external/pos_px")) {
     s.external_px = ReadArray<float>(at + "external/pos_px", {t, n, 2});

@@ -76,6 +76,15 @@ void RunRecorder::Images(size_t sensor, const ImageReading& r, int width, int he
   AppendAll(s.detected_valid, r.detected_valid);
 }
 
+void RunRecorder::FirstSlips(size_t sensor, const std::vector<double>& first_slip_s) {
+  if (sensor >= rec_.sensors.size() || first_slip_s.size() != static_cast<size_t>(rec_.sensors[sensor].n_pins)) {
+    throw std::logic_error("run " + std::to_string(rec_.index) + ": first slips of " +
+                           std::to_string(first_slip_s.size()) + " pins for sensor " + std::to_string(sensor) + " of " +
+                           std::to_string(rec_.sensors.size()));
+  }
+  rec_.sensors[sensor].pin_first_slip_s = first_slip_s;
+}
+
 void RunRecorder::Append(const SensorReading& r, std::uint8_t gross_slip, SensorRecord& s) {
   AppendAll(s.pos_m, r.pos_m);
   AppendAll(s.pos_px, r.pos_px);

@@ -44,6 +44,11 @@ class RunRecorder {
   /// the frame size does not fit.
   void Images(size_t sensor, const ImageReading& reading, int width, int height);
 
+  /// Sets sensor group `sensor`'s per-pin first-slip times (SensorRecord::pin_first_slip_s).
+  /// Throws std::logic_error, recording nothing, if the sensor index or the pin count does
+  /// not fit.
+  void FirstSlips(size_t sensor, const std::vector<double>& first_slip_s);
+
  private:
   static void Append(const SensorReading& reading, std::uint8_t gross_slip, SensorRecord& group);
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "sensors/dataset.h"
 
@@ -33,6 +34,10 @@ inline SensorRecord MakeSensor(const std::string& name, int t, int n, float salt
     s.pin_slip.push_back(k % 3 == 0 ? 1 : 0);
     s.pin_contact.push_back(k % 2 == 0 ? 1 : 0);
     s.normal_N.push_back(0.02f * static_cast<float>(k) + salt);
+  }
+  // First slips: every other pin never slipped (NaN).
+  for (int i = 0; i < n; ++i) {
+    s.pin_first_slip_s.push_back(i % 2 == 0 ? 0.5 + 0.01 * i + salt : std::numeric_limits<double>::quiet_NaN());
   }
   if (external) {
     for (size_t k = 0; k < tn * 2; ++k) s.external_px.push_back(200.5f + 0.25f * static_cast<float>(k) + salt);
@@ -78,6 +83,18 @@ inline void ExpectSameAttrs(const std::map<std::string, double>& a, const std::m
   }
 }
 
+/// Equal element by element, NaN equal to NaN.
+inline void ExpectSameTimes(const std::vector<double>& a, const std::vector<double>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (std::isnan(a[i])) {
+      EXPECT_TRUE(std::isnan(b[i])) << "element " << i;
+    } else {
+      EXPECT_EQ(a[i], b[i]) << "element " << i;
+    }
+  }
+}
+
 /// Every field of `a` and `b` equal, sensor by sensor in order.
 inline void ExpectSameRun(const RunRecord& a, const RunRecord& b) {
   EXPECT_EQ(a.index, b.index);
@@ -105,6 +122,7 @@ inline void ExpectSameRun(const RunRecord& a, const RunRecord& b) {
     EXPECT_EQ(x.pin_slip, y.pin_slip);
     EXPECT_EQ(x.pin_contact, y.pin_contact);
     EXPECT_EQ(x.incipient, y.incipient);
+    ExpectSameTimes(x.pin_first_slip_s, y.pin_first_slip_s);
     EXPECT_EQ(x.external_px, y.external_px);
     EXPECT_EQ(x.external_m, y.external_m);
     EXPECT_EQ(x.normal_N, y.normal_N);

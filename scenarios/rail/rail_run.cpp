@@ -116,7 +116,7 @@ void RailRun::AddChannels(const RailScenarioConfig& cfg, const Draws& d) {
     channels_.push_back(Channel{
         TactileSensor(im_.sensor_specs[k], ids, DeriveSeed(base, 1), DeriveSeed(base, 2)),
         FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_),
-        std::vector<std::uint8_t>(n_, 0), {}, std::nullopt});
+        std::vector<std::uint8_t>(n_, 0), {}, std::vector<double>(n_, kNaN), std::nullopt});
     // Rendered images only when asked for (their pixel noise on stream 4).
     if (cfg.images.enabled) channels_.back().imaging.emplace(cfg.images, cfg.sensor, DeriveSeed(base, 4));
     friction_switching_ = friction_switching_ || channels_.back().friction.switching();
@@ -190,6 +190,7 @@ bool RailRun::Step(RunRecord& rec) {
   for (Channel& ch : channels_) {
     if (ch.friction.switching()) ch.friction.Update(ch.sensor.samples(), ch.sensor.pin_slip(), model_);
   }
+  TrackFirstSlips(t);
   TrackOnset(t, seek_onset);
   if (seek_prediction) TrackPrediction(t);
   if (!frame_now) return true;
@@ -361,6 +362,18 @@ void RailRun::TrackIncipient(double t) {
   if (partial && std::isnan(sum_.incipient_onset_s)) sum_.incipient_onset_s = t;
 }
 
+void RailRun::TrackFirstSlips(double t) {
+  // At step resolution (the contacts are read at every step until the onset is found): the
+  // frames alone cannot order pins that start to slip within one frame.
+  if (t < sched_.retract_start || !std::isnan(sum_.gross_slip_onset_s)) return;
+  for (Channel& ch : channels_) {
+    const std::vector<std::uint8_t>& slip = ch.sensor.pin_slip();
+    for (int i = 0; i < n_; ++i) {
+      if (slip[i] && std::isnan(ch.first_slip_s[i])) ch.first_slip_s[i] = t;
+    }
+  }
+}
+
 double RailRun::ObjectHeightOverSensorM() const {
   return sim_->BodyPos(im_.slider_body)[2] - channels_.front().sensor.pose().origin[2];
 }
@@ -477,6 +490,7 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   rec.text_attrs["health_reason"] = sum_.health.reason;
   rec.text_attrs["stimulus"] = c_.rail.stimulus;
   for (SensorRecord& sensor : rec.sensors) sensor.text_attrs["skin_pattern"] = c_.skin.pattern;
+  for (size_t k = 0; k < channels_.size(); ++k) recorder_->FirstSlips(k, channels_[k].first_slip_s);
   sum_.actions = controller_->Actions();
   rec.actions.list = sum_.actions;
   sum_.controller_figures = controller_->Figures();

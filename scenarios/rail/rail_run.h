@@ -103,6 +103,7 @@ class RailRun {
     FrictionLaw friction;
     std::vector<std::uint8_t> slid_before_gross;   // per pin: slid between the retraction and gross slip
     std::vector<std::uint8_t> contact_at_retract;  // per pin: in contact when the retraction started
+    std::vector<double> first_slip_s;              // per pin: first step labelled slipping, retraction to onset
     std::optional<SensorImagePipeline> imaging;    // rendered frames and blob tracking (images.enabled)
   };
   void AddChannels(const RailScenarioConfig& cfg, const Draws& draws);
@@ -119,6 +120,7 @@ class RailRun {
   void TrackPrediction(double t);
   void RecordFrame(double t, double tf);
   void TrackIncipient(double t);
+  void TrackFirstSlips(double t);  // each pin's first slipping step from the retraction to the onset
   void TrackEvents(double t, double tf);
   void TrackHealth(double t);
   /// The object's height along the rail relative to the first sensor, m.

@@ -109,7 +109,7 @@ AlarmPins LabelAlarmPins(const SensorRecord& sensor, const IncipientAlarm& alarm
 }  // namespace
 
 std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run, const SensorRecord& sensor,
-                                                            const IncipientParams& params) {
+                                                            const IncipientParams& params, bool sectors_by_frame) {
   // Applies to fingerprint skins with an incipient onset or a fall.
   const auto pattern = sensor.text_attrs.find("skin_pattern");
   const bool fingerprint = pattern != sensor.text_attrs.end() && pattern->second.rfind("fingerprint", 0) == 0;
@@ -138,7 +138,10 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   // Amplitudes of the slipping pins, where they slip, and the marker agreement.
   s.amplitude_w1_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, 1) : kNaN;
   s.amplitude_w5_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, kSmoothingFrames) : kNaN;
-  s.sectors = OrderSlipSectors(sensor, retract, end);
+  const bool at_steps = !sectors_by_frame && !sensor.pin_first_slip_s.empty();
+  s.sectors = at_steps ? OrderSlipSectorsAtSteps(sensor, retract, std::isnan(retract_s) ? run.time.front() : retract_s,
+                                                 std::isnan(end_s) ? std::numeric_limits<double>::infinity() : end_s)
+                       : OrderSlipSectors(sensor, retract, end);
   s.tracking_correlation = TrackMarkers(run, sensor).correlation;
   return s;
 }

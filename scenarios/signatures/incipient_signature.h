@@ -56,8 +56,11 @@ struct IncipientSignature {
 /// Measures the signature with the detector parameters `params` (the hardware's by
 /// default); nullopt when it does not apply: a smooth skin (sensor attribute skin_pattern
 /// not fingerprint-*) or neither object_fall_s nor incipient_onset_s. Throws InputError for
-/// bad params.
+/// bad params. The sectors are ordered by the pins' first slipping physics steps when the
+/// sensor recorded them (labels/pin_first_slip_s), unless `sectors_by_frame`, and by the
+/// frames' labels otherwise.
 std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run, const SensorRecord& sensor,
-                                                            const IncipientParams& params = {});
+                                                            const IncipientParams& params = {},
+                                                            bool sectors_by_frame = false);
 
 }  // namespace tactip

@@ -21,7 +21,7 @@ SignatureRun MeasureSignatures(const RunRecord& run, const SensorRecord& sensor,
   s.skin = skin == sensor.text_attrs.end() ? "" : skin->second;
   s.incipient_onset = !std::isnan(RunAttr(run, "incipient_onset_s"));
   s.gross = MeasureGrossSignature(run, sensor, options.held_window_s);
-  s.incipient = MeasureIncipientSignature(run, sensor, options.detector);
+  s.incipient = MeasureIncipientSignature(run, sensor, options.detector, options.sectors_by_frame);
   return s;
 }
 
@@ -42,6 +42,7 @@ SignatureAcceptance JudgeSignatures(const std::vector<SignatureRun>& runs) {
       if (r.incipient->alarm_lead_s >= kAcceptedLeadS) ++a.alarm_lead.passed;
       if (r.incipient->sectors.EastWestFirst()) ++a.east_west_first.passed;
       if (r.incipient->sectors.EastWestTiedWithNorthSouth()) ++a.east_west_tied;
+      if (r.incipient->sectors.at_steps) ++a.sectors_at_steps;
     }
   }
   // Runs needed from the required shares ("most" = more than half).

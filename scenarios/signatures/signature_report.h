@@ -28,6 +28,9 @@ struct SignatureRun {
 struct SignatureOptions {
   IncipientParams detector;              ///< the incipient detector (hardware values by default)
   double held_window_s = kHeldWindowS;   ///< still window of the noise, s (HeldWindowS of the dataset)
+  /// Order the first-slipping sectors by the frames' labels even where the dataset has
+  /// each pin's first slipping step (labels/pin_first_slip_s).
+  bool sectors_by_frame = false;
 };
 
 /// Measures both signatures of `sensor`'s recording of `run`.
@@ -52,9 +55,11 @@ constexpr double kAcceptedLeadS = 0.5;
 /// incipient runs; first slip east/west in most (more than half) of them.
 struct SignatureAcceptance {
   AcceptanceCount spike_width, visible_lead, alarm_lead, east_west_first;
-  /// Incipient runs whose first frame of slip holds east or west together with south or
-  /// north (not counted as east/west first: the frames cannot order them).
+  /// Incipient runs whose first frame (or step) of slip holds east or west together with
+  /// south or north (not counted as east/west first: it cannot order them).
   int east_west_tied = 0;
+  /// Incipient runs whose sectors were ordered by physics step (the rest by frame).
+  int sectors_at_steps = 0;
 };
 
 /// Counts SignatureAcceptance over `runs`.

@@ -156,6 +156,13 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
                      s.has_external ? Num(s.tracking_correlation, "{:.3f}") : kNotApplicable);
 }
 
+// How the runs' sectors were ordered: "by physics step", "by frame" or "by physics step in k of n".
+std::string SectorResolution(const SignatureAcceptance& a) {
+  if (a.sectors_at_steps == a.east_west_first.runs) return "by physics step";
+  if (a.sectors_at_steps == 0) return "by frame";
+  return fmt::format("by physics step in {} of {}", a.sectors_at_steps, a.east_west_first.runs);
+}
+
 // The incipient per-run table and summary.
 std::string IncipientSection(const std::vector<SignatureRun>& runs, const SignatureAcceptance& a,
                              const IncipientParams& params) {
@@ -186,8 +193,8 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
                      ">= 0.5 s in >= 17/20 of runs: " + Verdict(a.alarm_lead));
   out += SummaryLine("alarm pins slip/stuck/free", AlarmPinsSummary(c), "not labelled");
   out += SummaryLine("first-slipping sector",
-                     fmt::format("E/W first {} of {}, tied with S/N {}", a.east_west_first.passed,
-                                 a.east_west_first.runs, a.east_west_tied),
+                     fmt::format("E/W first {} of {}, tied with S/N {} ({})", a.east_west_first.passed,
+                                 a.east_west_first.runs, a.east_west_tied, SectorResolution(a)),
                      "E and W first, then S, then N", "E/W in most runs: " + Verdict(a.east_west_first));
   out += SummaryLine("internal/external correlation",
                      c.correlation.empty() ? std::string("n/a (no external markers)") : Spread(c.correlation),

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace tactip {
@@ -29,6 +30,37 @@ std::array<double, 2> ContactCentroid(const SensorRecord& sensor, size_t f) {
   return {0.0, 0.0};
 }
 
+// Each pin's sector in the image at frame f (index into kSectors; kSectors.size() for none).
+std::vector<size_t> PinSectors(const SensorRecord& sensor, size_t f) {
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  const auto centre = ContactCentroid(sensor, f);
+  std::vector<size_t> sectors(n);
+  for (size_t i = 0; i < n; ++i) {
+    const char sector =
+        ImageSector(sensor.pos_px[(f * n + i) * 2] - centre[0], sensor.pos_px[(f * n + i) * 2 + 1] - centre[1]);
+    sectors[i] = static_cast<size_t>(std::find(kSectors.begin(), kSectors.end(), sector) - kSectors.begin());
+  }
+  return sectors;
+}
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// The order text from each sector's first slip (kNever: none), E, W, S, N within a tie.
+SectorOrder OrderByFirst(const std::array<double, kSectors.size()>& first) {
+  SectorOrder out;
+  std::vector<size_t> slipped;
+  for (size_t k = 0; k < kSectors.size(); ++k) {
+    if (first[k] != kNever) slipped.push_back(k);
+  }
+  std::stable_sort(slipped.begin(), slipped.end(), [&](size_t a, size_t b) { return first[a] < first[b]; });
+  for (size_t j = 0; j < slipped.size(); ++j) {
+    if (j > 0) out.order += first[slipped[j]] == first[slipped[j - 1]] ? '=' : '<';
+    out.order += kSectors[slipped[j]];
+    if (first[slipped[j]] == first[slipped.front()]) out.first = out.order;
+  }
+  return out;
+}
+
 }  // namespace
 
 bool SectorOrder::EastWestFirst() const {
@@ -46,38 +78,43 @@ char ImageSector(double du_px, double dv_px) {
 }
 
 SectorOrder OrderSlipSectors(const SensorRecord& sensor, size_t from_frame, size_t end_frame) {
-  SectorOrder out;
   const auto n = static_cast<size_t>(sensor.n_pins);
   const size_t frames = n == 0 ? 0 : sensor.valid.size() / n;
-  if (from_frame >= frames) return out;
+  if (from_frame >= frames) return {};
   end_frame = std::min(end_frame, frames);
-  const auto centre = ContactCentroid(sensor, from_frame);
   // Each sector's first frame with a slipping pin in contact.
-  constexpr size_t kNever = std::numeric_limits<size_t>::max();
-  std::array<size_t, kSectors.size()> first{kNever, kNever, kNever, kNever};
+  std::array<double, kSectors.size()> first{kNever, kNever, kNever, kNever};
+  const std::vector<size_t> sectors = PinSectors(sensor, from_frame);
   for (size_t i = 0; i < n; ++i) {
-    const char sector = ImageSector(sensor.pos_px[(from_frame * n + i) * 2] - centre[0],
-                                    sensor.pos_px[(from_frame * n + i) * 2 + 1] - centre[1]);
-    const auto k = static_cast<size_t>(std::find(kSectors.begin(), kSectors.end(), sector) - kSectors.begin());
+    const size_t k = sectors[i];
     if (k == kSectors.size()) continue;
-    for (size_t f = from_frame; f < std::min(end_frame, first[k]); ++f) {
+    for (size_t f = from_frame; f < end_frame && static_cast<double>(f) < first[k]; ++f) {
       if (sensor.pin_contact[f * n + i] && sensor.pin_slip[f * n + i]) {
-        first[k] = f;
+        first[k] = static_cast<double>(f);
         break;
       }
     }
   }
-  // Sectors by first frame (stable: E, W, S, N within a frame), then the text.
-  std::vector<size_t> slipped;
-  for (size_t k = 0; k < kSectors.size(); ++k) {
-    if (first[k] != kNever) slipped.push_back(k);
+  return OrderByFirst(first);
+}
+
+SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_frame, double from_s, double end_s) {
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  if (sensor.pin_first_slip_s.size() != n) {
+    throw std::invalid_argument("OrderSlipSectorsAtSteps: sensor '" + sensor.name + "' has no pin_first_slip_s");
   }
-  std::stable_sort(slipped.begin(), slipped.end(), [&](size_t a, size_t b) { return first[a] < first[b]; });
-  for (size_t j = 0; j < slipped.size(); ++j) {
-    if (j > 0) out.order += first[slipped[j]] == first[slipped[j - 1]] ? '=' : '<';
-    out.order += kSectors[slipped[j]];
-    if (first[slipped[j]] == first[slipped.front()]) out.first = out.order;
+  const size_t frames = n == 0 ? 0 : sensor.valid.size() / n;
+  if (from_frame >= frames) return {};
+  // Each sector's earliest first slip in the window (NaN, never, compares false).
+  std::array<double, kSectors.size()> first{kNever, kNever, kNever, kNever};
+  const std::vector<size_t> sectors = PinSectors(sensor, from_frame);
+  for (size_t i = 0; i < n; ++i) {
+    const double t = sensor.pin_first_slip_s[i];
+    if (sectors[i] == kSectors.size() || !(t >= from_s && t < end_s)) continue;
+    first[sectors[i]] = std::min(first[sectors[i]], t);
   }
+  SectorOrder out = OrderByFirst(first);
+  out.at_steps = true;
   return out;
 }
 

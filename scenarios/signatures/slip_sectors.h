@@ -14,13 +14,17 @@ struct SectorOrder {
   /// The sectors whose first slip is the earliest, joined by '=' ("E", "E=W"); "" when no
   /// pin slipped.
   std::string first;
-  /// Every sector that slipped, earliest first; '<' separates frames, '=' joins sectors
-  /// whose first slip shares a frame ("E=W<S<N"). Sectors without a slipping pin are left out.
+  /// Every sector that slipped, earliest first; '<' separates frames (physics steps when
+  /// `at_steps`), '=' joins sectors whose first slip shares one ("E=W<S<N"). Sectors without
+  /// a slipping pin are left out.
   std::string order;
+  /// True when ordered by the pins' first slipping physics steps (labels/pin_first_slip_s),
+  /// false when by the camera frames' labels.
+  bool at_steps = false;
   /// True when `first` holds east and/or west only (the hardware's finding).
   bool EastWestFirst() const;
   /// True when `first` holds east or west together with south or north: they started to
-  /// slip in the same frame, so the frames cannot order them.
+  /// slip in the same frame (or step), so it cannot order them.
   bool EastWestTiedWithNorthSouth() const;
 };
 
@@ -33,5 +37,10 @@ char ImageSector(double du_px, double dv_px);
 /// from_frame relative to the centroid of the pins in contact then (of all valid pins if
 /// none is).
 SectorOrder OrderSlipSectors(const SensorRecord& sensor, size_t from_frame, size_t end_frame);
+
+/// The same at step resolution: each sector's earliest labels/pin_first_slip_s in
+/// [from_s, end_s), sectors from the pins' image positions at from_frame as above. Needs the
+/// sensor's pin_first_slip_s (std::invalid_argument without it).
+SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_frame, double from_s, double end_s);
 
 }  // namespace tactip

@@ -63,6 +63,7 @@ class DatasetRefusalCliTest : public testing::CliFolderTest {
     s.pin_slip.assign(8, 0);
     s.pin_contact.assign(8, 1);
     s.incipient.assign(4, 0);
+    s.pin_first_slip_s = {0.02, std::numeric_limits<double>::quiet_NaN()};  // NaN: never slipped
     s.normal_N.assign(8, 0.5f);
     s.tangential_N.assign(16, 0.1f);
     r.object_height_m = {0.05, 0.05, 0.049, 0.048};
@@ -118,6 +119,12 @@ TEST_F(DatasetRefusalCliTest, EveryReadingCommandRefusesADamagedDataset) {
          Overwrite(f, "/runs/run_0001/sensors/tactip/pins/pos_px", H5T_NATIVE_FLOAT, px);
        },
        ": run_0001/sensors/tactip/pins/pos_px is -inf at frame 3, pin 1 (must be a finite number)", false},
+      {"inf-first-slip",
+       [](hid_t f) {
+         Overwrite(f, "/runs/run_0001/sensors/tactip/labels/pin_first_slip_s", H5T_NATIVE_DOUBLE,
+                   std::vector{0.02, std::numeric_limits<double>::infinity()});
+       },
+       ": run_0001/sensors/tactip/labels/pin_first_slip_s is inf at pin 1 (must be a finite time or NaN)", false},
       {"no-frames",
        [](hid_t f) {
          MakeEmpty(f, "/runs/run_0001/time", H5T_IEEE_F64LE, {0});

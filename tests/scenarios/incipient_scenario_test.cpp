@@ -286,6 +286,38 @@ TEST_F(IncipientScenarioTest, IncipientLabelsAgreeWithPerPinLabelsFrameByFrame) 
   }
 }
 
+TEST_F(IncipientScenarioTest, FirstSlipTimesAreTheFrameLabelsAtStepResolution) {
+  // labels/pin_first_slip_s: each pin's first slipping physics step from the retraction to
+  // the gross-slip onset. No frame in that window labels a pin slipping before it, and the
+  // steps resolve what the 10 ms frames cannot: some pins first slip between two frames.
+  const RunRecord& rec = Runs("fingerprint-v2", 1);
+  const SensorRecord& s = rec.sensors[0];
+  const size_t N = static_cast<size_t>(s.n_pins);
+  ASSERT_EQ(s.pin_first_slip_s.size(), N);
+  const double retract = Attr(rec, "retract_start_s"), gross = Attr(rec, "gross_slip_onset_s");
+  ASSERT_TRUE(std::isfinite(gross));
+  constexpr double kTol = 1e-6;  // frame and step times agree to rounding
+  int slipped = 0, between_frames = 0;
+  for (size_t i = 0; i < N; ++i) {
+    const double t = s.pin_first_slip_s[i];
+    if (std::isnan(t)) continue;
+    ++slipped;
+    EXPECT_GE(t, retract - kTol) << "pin " << i;
+    EXPECT_LE(t, gross + kTol) << "pin " << i;
+    const size_t f = FrameAt(rec, t);  // a frame within 1 us of t, if there is one
+    if (f == rec.frames() || std::abs(rec.time[f] - t) > 1e-6) ++between_frames;
+  }
+  EXPECT_GT(slipped, 0);
+  EXPECT_GT(between_frames, 0) << "every first slip fell on a frame";
+  for (size_t f = FrameAt(rec, retract); f < rec.frames() && rec.time[f] < gross; ++f) {
+    for (size_t i = 0; i < N; ++i) {
+      if (!s.pin_slip[f * N + i]) continue;
+      ASSERT_FALSE(std::isnan(s.pin_first_slip_s[i])) << "pin " << i << " slips in frame " << f << " but has no first slip";
+      EXPECT_LE(s.pin_first_slip_s[i], rec.time[f] + kTol) << "pin " << i << " frame " << f;
+    }
+  }
+}
+
 TEST_F(IncipientScenarioTest, SlipStartsAtTheOutermostContactRingAndSpreadsInwards) {
   // Cattaneo-Mindlin: under a growing tangential load the lightly pressed edge of the
   // contact slides first and the slip annulus grows inwards. Rings are concentric on the

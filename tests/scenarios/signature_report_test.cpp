@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -225,6 +226,33 @@ TEST(SlipSectorsTest, SectorsSlippingInTheSameFrameAreJoinedAndSouthFirstIsNotEa
   EXPECT_EQ(OrderSlipSectors(s, 0, 8).order, "");
 }
 
+TEST(SlipSectorsTest, FirstSlipStepsOrderSectorsThatShareAFrame) {
+  // East, south and north all slip in frame 8; their first physics steps order them.
+  SensorRecord s = CompassSensor(30);
+  SlipFrom(s, 1, 8);  // east
+  SlipFrom(s, 3, 8);  // south
+  SlipFrom(s, 4, 8);  // north
+  EXPECT_EQ(OrderSlipSectors(s, 0, 30).first, "E=S=N");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  s.pin_first_slip_s = {nan, 0.0795, nan, 0.0785, 0.0790};  // centre, E, W, S, N (frames every 10 ms)
+  const SectorOrder steps = OrderSlipSectorsAtSteps(s, 0, 0.0, 0.30);
+  EXPECT_TRUE(steps.at_steps);
+  EXPECT_FALSE(OrderSlipSectors(s, 0, 30).at_steps);
+  EXPECT_EQ(steps.first, "S");
+  EXPECT_EQ(steps.order, "S<N<E");
+  EXPECT_FALSE(steps.EastWestFirst());
+  // Only the window [from_s, end_s) counts; equal steps tie as equal frames do.
+  EXPECT_EQ(OrderSlipSectorsAtSteps(s, 0, 0.0786, 0.30).order, "N<E");
+  EXPECT_EQ(OrderSlipSectorsAtSteps(s, 0, 0.0, 0.0790).order, "S");
+  s.pin_first_slip_s[1] = 0.0785;
+  const SectorOrder tied = OrderSlipSectorsAtSteps(s, 0, 0.0, 0.30);
+  EXPECT_EQ(tied.first, "E=S");
+  EXPECT_TRUE(tied.EastWestTiedWithNorthSouth());
+  // A sensor without the first slips cannot be ordered by step.
+  s.pin_first_slip_s.clear();
+  EXPECT_THROW(OrderSlipSectorsAtSteps(s, 0, 0.0, 0.30), std::invalid_argument);
+}
+
 TEST(SlipSectorsTest, ImageSectorIsTheDominantAxisWithVDownBeingSouth) {
   EXPECT_EQ(ImageSector(3, 1), 'E');
   EXPECT_EQ(ImageSector(-3, 1), 'W');
@@ -272,6 +300,22 @@ TEST(IncipientSignatureTest, SlipBecomesVisibleOnceTheSmoothedExcessSpeedPassesT
   EXPECT_TRUE(s->has_phase);
   EXPECT_FALSE(s->has_external);
   EXPECT_TRUE(std::isnan(s->tracking_correlation));
+}
+
+TEST(IncipientSignatureTest, SectorsAreOrderedByPhysicsStepWhenTheRunRecordsFirstSlips) {
+  RunRecord r = IncipientRun();
+  EXPECT_FALSE(MeasureIncipientSignature(r, r.sensors[0])->sectors.at_steps);  // no first slips recorded
+  // One pin's first slip in the window, another's after the gross-slip onset (not counted).
+  r.sensors[0].pin_first_slip_s.assign(20, std::numeric_limits<double>::quiet_NaN());
+  r.sensors[0].pin_first_slip_s[4] = 59.5 * kFrameS;
+  r.sensors[0].pin_first_slip_s[9] = 141 * kFrameS;
+  const auto steps = MeasureIncipientSignature(r, r.sensors[0]);
+  EXPECT_TRUE(steps->sectors.at_steps);
+  EXPECT_EQ(steps->sectors.order.size(), 1u) << steps->sectors.order;
+  // --sectors-by-frame: the frames' labels, as without the first slips.
+  const auto frames = MeasureIncipientSignature(r, r.sensors[0], {}, /*sectors_by_frame=*/true);
+  EXPECT_FALSE(frames->sectors.at_steps);
+  EXPECT_EQ(frames->sectors.first, "E");
 }
 
 /// A still 20-pin v2 run with its incipient onset at frame 60 and the fall at frame 145,
@@ -400,8 +444,16 @@ TEST(SignatureAcceptanceTest, AlarmNeedsSeventeenOfTwentyAndVisibilityNinetyPerc
   a = JudgeSignatures(runs);
   EXPECT_EQ(a.east_west_first.passed, 17);
   EXPECT_EQ(a.east_west_tied, 2);
-  EXPECT_NE(FormatSignatureReport(runs, {}).find("E/W first 17 of 20, tied with S/N 2"),
+  EXPECT_NE(FormatSignatureReport(runs, {}).find("E/W first 17 of 20, tied with S/N 2 (by frame)"),
             std::string::npos);
+  // The summary says how the sectors were ordered.
+  EXPECT_EQ(a.sectors_at_steps, 0);
+  runs[3].incipient->sectors.at_steps = true;
+  a = JudgeSignatures(runs);
+  EXPECT_EQ(a.sectors_at_steps, 1);
+  EXPECT_NE(FormatSignatureReport(runs, {}).find("tied with S/N 2 (by physics step in 1 of 20)"), std::string::npos);
+  for (SignatureRun& r : runs) r.incipient->sectors.at_steps = true;
+  EXPECT_NE(FormatSignatureReport(runs, {}).find("tied with S/N 2 (by physics step)"), std::string::npos);
 }
 
 TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {

@@ -112,9 +112,11 @@ void WriteLayoutOne(const std::string& path, const RunRecord& run, bool incipien
   H5Fclose(f);
 }
 
-/// `run` as layout 1 can hold it: no controller record.
-RunRecord WithoutActions(RunRecord run) {
+/// `run` as layout 1 can hold it: no controller record and no first slips (both came
+/// later).
+RunRecord AsLayoutOne(RunRecord run) {
   run.actions = {};
+  for (SensorRecord& s : run.sensors) s.pin_first_slip_s.clear();
   return run;
 }
 
@@ -130,7 +132,7 @@ TEST_F(DatasetLayoutsTest, ALayoutOneFileReadsAsTheSameRunWithOneSensorNamedTact
   EXPECT_EQ(reader.header().layout_version, 1);
   EXPECT_EQ(reader.run_indices(), std::vector<int>{2});
   // Events land among the run's attributes, skin_pattern on the sensor: the same record.
-  ExpectSameRun(reader.ReadRun(2), WithoutActions(run));
+  ExpectSameRun(reader.ReadRun(2), AsLayoutOne(run));
   const RunRecord summary = reader.ReadRunSummary(2);
   ASSERT_EQ(summary.sensors.size(), 1u);
   EXPECT_EQ(summary.sensors[0].name, "tactip");
@@ -140,7 +142,7 @@ TEST_F(DatasetLayoutsTest, ALayoutOneFileReadsAsTheSameRunWithOneSensorNamedTact
 }
 
 TEST_F(DatasetLayoutsTest, ALayoutOneFileReadBackWritesTheSameRunInLayoutTwo) {
-  const RunRecord run = WithoutActions(MakeRun(0, 5, 3));
+  const RunRecord run = AsLayoutOne(MakeRun(0, 5, 3));
   const std::string old_path = Path("old.h5"), new_path = Path("new.h5");
   WriteLayoutOne(old_path, run);
   {
@@ -154,7 +156,7 @@ TEST_F(DatasetLayoutsTest, ALayoutOneFileReadBackWritesTheSameRunInLayoutTwo) {
 }
 
 TEST_F(DatasetLayoutsTest, ALayoutOneFileWithoutPartialSlipLabelsDerivesThem) {
-  RunRecord run = WithoutActions(MakeRun(0, 6, 4));
+  RunRecord run = AsLayoutOne(MakeRun(0, 6, 4));
   SensorRecord& s = run.sensors[0];
   s.incipient = PartialSlipLabels(s.pin_contact, s.pin_slip, s.n_pins);
   const std::string path = Path("old.h5");
@@ -163,7 +165,7 @@ TEST_F(DatasetLayoutsTest, ALayoutOneFileWithoutPartialSlipLabelsDerivesThem) {
 }
 
 TEST_F(DatasetLayoutsTest, ALayoutOneFileNamesItsArraysUnderTheRun) {
-  RunRecord run = WithoutActions(MakeRun(1, 4, 3));
+  RunRecord run = AsLayoutOne(MakeRun(1, 4, 3));
   run.sensors[0].valid[3 * 2 + 1] = 2;  // frame 2, pin 1
   const std::string path = Path("old.h5");
   WriteLayoutOne(path, run);

@@ -35,6 +35,7 @@ struct StudyArgs {
   IncipientParams sweep_detector;
   std::string report_what, report_path, report_csv, report_sensor;
   IncipientParams report_params;
+  bool report_sectors_by_frame = false;
 };
 
 // The dome-check options for the rail config with the dome's skin (fingerprint-v2 unless
@@ -119,6 +120,7 @@ int RunSignatureReport(const StudyArgs& a, const DatasetReader& reader) {
   SignatureOptions options;
   options.detector = a.report_params;
   options.held_window_s = HeldWindowS(reader.header());
+  options.sectors_by_frame = a.report_sectors_by_frame;
   std::vector<SignatureRun> runs;
   for (int idx : reader.run_indices()) {
     const RunRecord run = reader.ReadRun(idx);
@@ -270,6 +272,10 @@ CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
       ->check(NumberAbove(0.0));
   c->add_option("--count-thr", a.report_params.count_thr, "Detector set-size threshold I_thr (default 4).")
       ->check(CLI::Range(1, 100000));
+  c->add_flag("--sectors-by-frame", a.report_sectors_by_frame,
+              "signatures: order the first-slipping sectors by the camera frames' labels even where the dataset "
+              "records each pin's first slipping physics step (labels/pin_first_slip_s; by step is the default "
+              "then).");
   c->add_option("--csv", a.report_csv, "Also write the per-run table as CSV; not the input FILE.")
       ->check(NonEmpty("a file name"));
   AddSensorOption(c, a.report_sensor);
