@@ -52,7 +52,7 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
     shear.zeta = mech.TipDamping(spec.sim.timestep_s) / (2.0 * mech.pin_mass_kg * shear.omega);
     shear.damping_follows_timestep = true;
     shear.name = "the membrane lattice's shear mode (set by skin.thickness_mm, skin.skin_modulus_mpa, skin.ridge_*, "
-                 "skin.pin_mass_g)";
+                 "skin.membrane_links, skin.pin_mass_g)";
     modes.push_back(shear);
   }
   if (spec.skin.coupling == "shell") {

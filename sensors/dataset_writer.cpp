@@ -36,12 +36,22 @@ long long FirstNonFinite(const std::vector<T>& v) {
   return -1;
 }
 
+/// Index of the first infinite value of `v` (NaN allowed), -1 if none.
+long long FirstInfinite(const std::vector<double>& v) {
+  for (size_t k = 0; k < v.size(); ++k) {
+    if (std::isinf(v[k])) return static_cast<long long>(k);
+  }
+  return -1;
+}
+
 /// An array that must hold finite values: its path in the run, the index of its first
-/// non-finite value (-1: none), values per frame and per pin (0: no pin axis).
+/// non-finite value (-1: none), values per frame and per pin (0: no pin axis), and what its
+/// first axis counts.
 struct FiniteCheck {
   std::string path;
   long long bad;
   size_t per_frame, per_pin;
+  const char* counts = "frame";
 };
 
 /// The arrays of `run` that must be finite, with their paths in the file.
@@ -57,12 +67,13 @@ std::vector<FiniteCheck> FiniteChecks(const RunRecord& run) {
     out.push_back({at + "external/pos_m", FirstNonFinite(s.external_m), 3 * n, 3});
     out.push_back({at + "contact/normal_N", FirstNonFinite(s.normal_N), n, 1});
     out.push_back({at + "contact/tangential_N", FirstNonFinite(s.tangential_N), 2 * n, 2});
+    out.push_back({at + "labels/pin_first_slip_s", FirstInfinite(s.pin_first_slip_s), 1, 0, "pin"});  // NaN: never
   }
   out.push_back({"object/height_m", FirstNonFinite(run.object_height_m), 1, 0});
   out.push_back({"actions/controls", FirstNonFinite(run.actions.controls), run.actions.actuators.size(), 0});
   std::vector<double> action_times;
   for (const ControllerAction& a : run.actions.list) action_times.push_back(a.time_s);
-  out.push_back({"actions/time", FirstNonFinite(action_times), 1, 0});
+  out.push_back({"actions/time", FirstNonFinite(action_times), 1, 0, "action"});
   return out;
 }
 
@@ -72,7 +83,7 @@ void CheckFinite(const RunRecord& run, const std::string& err) {
   for (const FiniteCheck& a : FiniteChecks(run)) {
     if (a.bad < 0) continue;
     const size_t k = static_cast<size_t>(a.bad);
-    std::string where = (a.path == "actions/time" ? "action " : "frame ") + std::to_string(k / a.per_frame);
+    std::string where = std::string(a.counts) + " " + std::to_string(k / a.per_frame);
     if (a.per_pin > 0) where += ", pin " + std::to_string((k % a.per_frame) / a.per_pin);
     throw InputError(err + "/runs/" + RunGroupName(run.index) + "/" + a.path + " would hold a non-finite value (" +
                      where + "); the run is not written");

@@ -490,7 +490,15 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   rec.text_attrs["health_reason"] = sum_.health.reason;
   rec.text_attrs["stimulus"] = c_.rail.stimulus;
   for (SensorRecord& sensor : rec.sensors) sensor.text_attrs["skin_pattern"] = c_.skin.pattern;
-  for (size_t k = 0; k < channels_.size(); ++k) recorder_->FirstSlips(k, channels_[k].first_slip_s);
+  for (size_t k = 0; k < channels_.size(); ++k) {
+    // The onset is dated back to the first step of its all-slide run: a pin first seen
+    // slipping after that step, while the onset was being confirmed, slipped in gross slip.
+    std::vector<double> first = channels_[k].first_slip_s;
+    for (double& t : first) {
+      if (t > sum_.gross_slip_onset_s) t = kNaN;
+    }
+    recorder_->FirstSlips(k, first);
+  }
   sum_.actions = controller_->Actions();
   rec.actions.list = sum_.actions;
   sum_.controller_figures = controller_->Figures();

@@ -316,6 +316,11 @@ TEST(IncipientSignatureTest, SectorsAreOrderedByPhysicsStepWhenTheRunRecordsFirs
   const auto frames = MeasureIncipientSignature(r, r.sensors[0], {}, /*sectors_by_frame=*/true);
   EXPECT_FALSE(frames->sectors.at_steps);
   EXPECT_EQ(frames->sectors.first, "E");
+  // The report's option reaches it.
+  SignatureOptions options;
+  EXPECT_TRUE(MeasureSignatures(r, r.sensors[0], options).incipient->sectors.at_steps);
+  options.sectors_by_frame = true;
+  EXPECT_FALSE(MeasureSignatures(r, r.sensors[0], options).incipient->sectors.at_steps);
 }
 
 /// A still 20-pin v2 run with its incipient onset at frame 60 and the fall at frame 145,

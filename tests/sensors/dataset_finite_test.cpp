@@ -94,6 +94,9 @@ TEST_F(DatasetFiniteTest, ANonFiniteArrayValueIsRefusedNamingArrayFrameAndPinAnd
        "/runs/run_0007/actions/controls would hold a non-finite value (frame 3); the run is not written"},
       {"action time", [](RunRecord& r, float i, float) { r.actions.list[0].time_s = i; },
        "/runs/run_0007/actions/time would hold a non-finite value (action 0); the run is not written"},
+      {"first slip", [](RunRecord& r, float i, float n) { r.sensors[0].pin_first_slip_s = {n, n, i}; },
+       "/runs/run_0007/sensors/tactip/labels/pin_first_slip_s would hold a non-finite value (pin 2); the run is not "
+       "written"},
   };
   for (const Case& c : cases) {
     const std::string path = Path("x.h5");

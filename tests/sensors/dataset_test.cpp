@@ -191,6 +191,7 @@ TEST_F(DatasetTest, FileFollowsTheDocumentedSchema) {
       {"/runs/run_0002/sensors/tactip/labels/pin_slip", H5T_STD_U8LE, {5, 3}, "1"},
       {"/runs/run_0002/sensors/tactip/labels/pin_contact", H5T_STD_U8LE, {5, 3}, "1"},
       {"/runs/run_0002/sensors/tactip/labels/incipient", H5T_STD_U8LE, {5}, "1"},
+      {"/runs/run_0002/sensors/tactip/labels/pin_first_slip_s", H5T_IEEE_F64LE, {3}, "s"},
       {"/runs/run_0002/sensors/tactip/contact/normal_N", H5T_IEEE_F32LE, {5, 3}, "N"},
       {"/runs/run_0002/sensors/tactip/contact/tangential_N", H5T_IEEE_F32LE, {5, 3, 2}, "N"},
       {"/runs/run_0002/object/height_m", H5T_IEEE_F64LE, {5}, "m"},

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -74,6 +75,15 @@ TEST(RunRecorderTest, AReadingOrControlsThatDoNotFitTheRecordAreAProgrammingErro
   recorder.Frame(0.0, {&three}, 0, 0.0, {0.0});
   EXPECT_EQ(rec.time.size(), 1u);
   EXPECT_NO_THROW(rec.CheckShapes());
+  // First slips: one per pin of an existing sensor, or nothing is recorded.
+  EXPECT_THROW(recorder.FirstSlips(0, {0.1, 0.2}), std::logic_error);
+  EXPECT_THROW(recorder.FirstSlips(1, {0.1, 0.2, 0.3}), std::logic_error);
+  EXPECT_TRUE(rec.sensors[0].pin_first_slip_s.empty());
+  recorder.FirstSlips(0, {0.1, std::nan(""), 0.3});
+  EXPECT_EQ(rec.sensors[0].pin_first_slip_s.size(), 3u);
+  EXPECT_NO_THROW(rec.CheckShapes());
+  rec.sensors[0].pin_first_slip_s.pop_back();
+  EXPECT_THROW(rec.CheckShapes(), std::logic_error);  // not one per pin
 }
 
 }  // namespace
