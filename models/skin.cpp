@@ -167,18 +167,6 @@ double Dist(const Planar& p, const Planar& q) { return std::hypot(p.x - q.x, p.y
 
 }  // namespace
 
-std::array<double, 3> PinShearAxis(const PinGeometry& pin, char axis, const std::string& shear_axes) {
-  std::array<double, 3> a = axis == 'y' ? std::array<double, 3>{0, 1, 0} : std::array<double, 3>{0, 0, 1};
-  if (shear_axes != "tangent") return a;
-  // Remove the component along the dome's normal; the rest is tangent to the dome.
-  const auto& n = pin.normal;
-  const double along = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
-  for (int k = 0; k < 3; ++k) a[k] -= along * n[k];
-  const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  for (double& c : a) c /= norm;
-  return a;
-}
-
 PinLattice PinLattice::Build(const SkinConfig& skin) {
   const double R = skin.radius_mm * 1e-3;
   std::vector<Planar> pts = skin.Fingerprint() ? RingLayout(skin) : HexLayout(skin);
@@ -488,11 +476,10 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
   if (!plan.shell_mode) {
     // The pin's own shear springs: gel column (in series with its ridge).
     for (char axis : {'y', 'z'}) {
-      const std::array<double, 3> dir = PinShearAxis(pin, axis, plan.skin.shear_axes);
       b.Add("joint")
           .Set("name", names.PinShearJoint(i, axis))
           .Set("type", "slide")
-          .Set("axis", std::vector<double>(dir.begin(), dir.end()))
+          .Set("axis", axis == 'y' ? std::vector<double>{0, 1, 0} : std::vector<double>{0, 0, 1})
           .Set("stiffness", mech.TipStiffness(pin.ring))
           .Set("damping", plan.c_tip);
     }

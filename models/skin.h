@@ -39,7 +39,6 @@ struct SkinConfig {
   std::string coupling = "shell";   ///< how pins are coupled through the skin: shell, membrane or none
   std::string rim = "free";         ///< the skin beyond the pattern: free, or clamped at the dome's base
   std::string membrane_links = "isotropic"; ///< membrane lattice: links pull on both in-plane components, or along themselves
-  std::string shear_axes = "plate";  ///< lattice pins' shear DOFs: the sensor's y, z (plate) or the dome's tangent plane
   std::string pattern = "smooth";   ///< smooth, fingerprint-v1, fingerprint-v2
   double ridge_spacing_mm = 3.0;    ///< fingerprint: radial step between ridge rings (arc length)
   double ridge_height_mm = 2.0;     ///< fingerprint: ridge height above the skin (v2: peak-to-trough)
@@ -136,18 +135,9 @@ struct SkinConfig {
       "central: along the link only, as the triangular spring network that k_link = (sqrt 3 / 2) E t is derived "
       "from; a ridge rocks only across itself, so the ridges enter by the link's radial share c: k = 1 / (1 / "
       "k_link + 2 c^2 / k_rock), which is k_couple for a radial link, k_link along a ring. At a step of 0.25 ms "
-      "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.5 mm/s (README 'Membrane "
+      "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.3 mm/s (README 'Membrane "
       "links'); opt-in, refused by 'validate contact' (its exact solution has isotropic links).",
       Choices{"isotropic", "central"});
-    v("shear_axes", shear_axes, "",
-      "Directions of each lattice pin's two shear DOFs (coupling membrane or none; the shell ignores this). "
-      "plate: the sensor's y and z axes, parallel to a flat stimulus, so a sheared pin keeps its height along "
-      "the dome axis. tangent: those axes projected into the dome's tangent plane at the pin (the membrane "
-      "slides over the dome): a pin sheared away from the apex also recedes from the stimulus, by the sine of "
-      "its polar angle, one sheared towards it advances, so the object's weight unloads the lower (south) side "
-      "of the contact and loads the upper. Opt-in (README 'Shear axes'); refused by 'validate contact' (its "
-      "exact solution shears the pins parallel to the plate).",
-      Choices{"plate", "tangent"});
     v("pattern", pattern, "",
       "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "
       "ridge rings with the pins extending into them (they pivot: the inner marker and the outer contact point "
@@ -308,11 +298,6 @@ struct PinGeometry {
   double azimuth_rad = 0.0;             ///< angle around the axis, from +y towards +z
   std::array<double, 3> normal{};       ///< outward unit normal of the dome at the pin
 };
-
-/// Direction (x along the dome axis, y, z) of a lattice pin's shear DOF along the sensor's
-/// `axis` ('y' or 'z'): the axis itself under skin.shear_axes = plate, its projection into
-/// the dome's tangent plane at the pin, normalised, under tangent.
-std::array<double, 3> PinShearAxis(const PinGeometry& pin, char axis, const std::string& shear_axes);
 
 /// Pin positions and neighbour pairs of a hexagonal lattice wrapped on the dome
 /// (azimuthal-equidistant: arc length from the apex = planar distance).

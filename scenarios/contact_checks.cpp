@@ -258,10 +258,6 @@ void CheckDomeSkin(const SkinConfig& skin) {
                      "': the lattice's exact quasi-static solution couples both in-plane components of a link "
                      "(isotropic links)");
   }
-  if (skin.shear_axes != "plate") {
-    throw InputError("dome check: skin.shear_axes = '" + skin.shear_axes +
-                     "': the lattice's exact quasi-static solution shears the pins parallel to the plate (plate axes)");
-  }
 }
 
 namespace {

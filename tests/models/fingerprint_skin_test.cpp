@@ -364,65 +364,6 @@ TEST_F(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormal
   EXPECT_EQ(bend, live_edges);
 }
 
-/// The axis of a joint element, parsed from its MJCF.
-std::array<double, 3> JointAxis(const mjcf::Element& joint) {
-  std::istringstream in(joint.Get("axis"));
-  std::array<double, 3> a{};
-  in >> a[0] >> a[1] >> a[2];
-  return a;
-}
-
-// skin.shear_axes: plate keeps every pin's shear joints on the sensor's y and z (the
-// default, unchanged); tangent turns them into the dome's tangent plane at the pin, so a pin
-// sheared downwards on the lower side of the dome moves back from the stimulus (-x) and one
-// on the upper side moves towards it, by the sine of its polar angle.
-TEST_F(FingerprintSkinPartTest, TangentShearAxesLieInTheDomesTangentPlaneAtEachPin) {
-  SkinConfig skin = PresetSkin("fingerprint-v2");
-  const PinLattice lat = PinLattice::Build(skin);
-  const std::vector<bool> every(lat.size(), true);
-  const auto axes_of = [&](const std::string& mode) {
-    skin.shear_axes = mode;
-    const SkinPart part = BuildSkin(skin, ContactConfig{}, lat, every, 5e-4);
-    std::map<std::string, std::array<double, 3>> axes;
-    for (const auto& [i, body] : PinBodies(part)) {
-      for (const auto& c : body->children()) {
-        if (c.tag() == "joint" && c.Get("name").find("_t") != std::string::npos) axes[c.Get("name")] = JointAxis(c);
-      }
-    }
-    return axes;
-  };
-  const auto plate = axes_of("plate"), tangent = axes_of("tangent");
-  ASSERT_EQ(plate.size(), 2 * lat.size());
-  ASSERT_EQ(tangent.size(), 2 * lat.size());
-  const SkinNames names;
-  int south = 0, north = 0;
-  for (const PinGeometry& pin : lat.pins) {
-    SCOPED_TRACE("pin " + std::to_string(pin.index));
-    const auto& n = pin.normal;
-    for (char axis : {'y', 'z'}) {
-      const std::array<double, 3> p = plate.at(names.PinShearJoint(pin.index, axis));
-      const std::array<double, 3> t = tangent.at(names.PinShearJoint(pin.index, axis));
-      EXPECT_EQ(p, (axis == 'y' ? std::array<double, 3>{0, 1, 0} : std::array<double, 3>{0, 0, 1}));
-      EXPECT_NEAR(t[0] * n[0] + t[1] * n[1] + t[2] * n[2], 0.0, 1e-6) << "not tangent to the dome";
-      EXPECT_NEAR(std::hypot(t[0], t[1], t[2]), 1.0, 1e-6);
-      // Its own component is sqrt(1 - n_axis^2), at least the cosine of the pin's polar angle.
-      EXPECT_GE(axis == 'y' ? t[1] : t[2], std::cos(pin.polar_rad) - 1e-9);
-    }
-    // Sheared down (-z): the x component of the motion is +t_x, which is n_z n_x / |...|.
-    const double dx_down = -tangent.at(names.PinShearJoint(pin.index, 'z'))[0];
-    if (n[2] < -0.1) {
-      EXPECT_LT(dx_down, -0.05) << "a lower pin sheared down must recede";
-      ++south;
-    } else if (n[2] > 0.1) {
-      EXPECT_GT(dx_down, 0.05) << "an upper pin sheared down must advance";
-      ++north;
-    }
-    EXPECT_NEAR(dx_down, n[2] * n[0] / std::sqrt(1.0 - n[2] * n[2]), 1e-6);
-  }
-  EXPECT_GT(south, 10);
-  EXPECT_EQ(south, north);
-}
-
 /// The v2 preset with central membrane links, every pin collidable, at 0.25 ms.
 struct CentralV2 {
   SkinConfig skin = [] {

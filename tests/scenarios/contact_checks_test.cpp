@@ -365,27 +365,11 @@ TEST(DomeCheckTest, CentralMembraneLinksAreRefusedNamingTheKey) {
   }
 }
 
-// Its pins shear parallel to the plate: tangent shear axes are refused too.
-TEST(DomeCheckTest, TangentShearAxesAreRefusedNamingTheKey) {
-  SkinConfig skin;
-  skin.coupling = "membrane";
-  skin.shear_axes = "tangent";
-  try {
-    CheckDomeSkin(skin);
-    ADD_FAILURE() << "tangent shear axes accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("skin.shear_axes = 'tangent'"), std::string::npos) << e.what();
-  }
-}
-
 TEST_F(ValidateContactCliTest, CentralMembraneLinksAreRefusedInOneLine) {
   const testing::CliResult r =
       Run("validate contact --skin fingerprint-v2 --set skin.membrane_links=central");
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("skin.membrane_links = 'central'"), std::string::npos) << r.err;
-  const testing::CliResult tangent = Run("validate contact --skin fingerprint-v2 --set skin.shear_axes=tangent");
-  EXPECT_EQ(tangent.code, 2) << tangent.out << tangent.err;
-  EXPECT_NE(tangent.err.find("skin.shear_axes = 'tangent'"), std::string::npos) << tangent.err;
 }
 
 }  // namespace
