@@ -104,18 +104,17 @@ SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_fram
     throw std::invalid_argument("OrderSlipSectorsAtSteps: sensor '" + sensor.name + "' has no pin_first_slip_s");
   }
   const size_t frames = n == 0 ? 0 : sensor.valid.size() / n;
-  SectorOrder out;
-  out.at_steps = true;
-  if (from_frame >= frames) return out;
   // Each sector's earliest first slip in the window (NaN, never, compares false).
   std::array<double, kSectors.size()> first{kNever, kNever, kNever, kNever};
-  const std::vector<size_t> sectors = PinSectors(sensor, from_frame);
-  for (size_t i = 0; i < n; ++i) {
-    const double t = sensor.pin_first_slip_s[i];
-    if (sectors[i] == kSectors.size() || !(t >= from_s && t < end_s)) continue;
-    first[sectors[i]] = std::min(first[sectors[i]], t);
+  if (from_frame < frames) {
+    const std::vector<size_t> sectors = PinSectors(sensor, from_frame);
+    for (size_t i = 0; i < n; ++i) {
+      const double t = sensor.pin_first_slip_s[i];
+      if (sectors[i] == kSectors.size() || !(t >= from_s && t < end_s)) continue;
+      first[sectors[i]] = std::min(first[sectors[i]], t);
+    }
   }
-  out = OrderByFirst(first);
+  SectorOrder out = OrderByFirst(first);
   out.at_steps = true;
   return out;
 }
