@@ -111,6 +111,12 @@ void SkinConfig::ValidateRules() const {
   if (contact_radius_mm >= radius_mm) {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
   }
+  if (normal_spring == "dome" && pattern == "fingerprint-v1") {
+    // Measured (README 'Dome springs'): 10 of 10 v1 incipient runs flagged by run health.
+    FailRule("skin.normal_spring", normal_spring,
+             "fingerprint-v1's edge pins flicker in and out of contact while held on dome springs (their runs "
+             "are flagged by run health); use axial");
+  }
   // The configured reach bounds the outermost ring, so this edge is never inside RimAnchor's.
   const double edge_mm = reach_mm + 0.5 * RingStepMm();
   if (rim == "clamped" && edge_mm >= BaseArcMm()) {
@@ -337,11 +343,14 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& latt
     m.k_rim_pin_N_m = m.k_rock_N_m > 0.0 ? Series(share, m.k_rock_N_m) : share;
   }
   if (m.central_links) m.central_row_max_N_m = CentralRowMax(m, lattice);
+  if (skin.DomeSprings()) {
+    for (const auto& pin : lattice.pins) m.dome_gain = std::max(m.dome_gain, 1.0 / (pin.normal[0] * pin.normal[0]));
+  }
   return m;
 }
 
 double SkinMechanics::StiffestOmega() const {
-  return std::sqrt((k_normal_N_m + 12.0 * k_bend_N_m) / pin_mass_kg);
+  return std::sqrt((k_normal_N_m * dome_gain + 12.0 * k_bend_N_m) / pin_mass_kg);
 }
 
 double SkinMechanics::StiffestShearOmega() const {
@@ -391,12 +400,13 @@ double SkinMechanics::TipDamping(double timestep_s) const {
 }
 
 double SkinMechanics::NormalDamping(double timestep_s) const {
-  return std::max(pin_damping_Ns_m, StableDamping(StiffestOmega(), pin_mass_kg, timestep_s));
+  return std::max(pin_damping_Ns_m, dome_gain * StableDamping(StiffestOmega(), pin_mass_kg, timestep_s));
 }
 
 std::string SkinNames::PinBody(int i) const { return prefix + fmt::format("pin{}", i); }
 std::string SkinNames::PinJoint(int i) const { return prefix + fmt::format("pin{}_n", i); }
 std::string SkinNames::PinShearJoint(int i, char axis) const { return prefix + fmt::format("pin{}_t{}", i, axis); }
+std::string SkinNames::PinDomeSpring(int i) const { return prefix + fmt::format("pin{}_gel", i); }
 std::string SkinNames::PinGeom(int i) const { return prefix + fmt::format("pin{}_pad", i); }
 std::string SkinNames::PinSite(int i) const { return prefix + fmt::format("pin{}_inner", i); }
 std::string SkinNames::PinOuterSite(int i) const { return prefix + fmt::format("pin{}_outer", i); }
@@ -433,11 +443,11 @@ void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
   shell.Set("name", plan.names.Shell());
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
-                            "{} membrane links, shear damping {:.3g} N s/m, normal damping {:.3g} N s/m, clamped rim "
+                            "{} membrane links, {} normal springs, shear damping {:.3g} N s/m, normal damping {:.3g} N s/m, clamped rim "
                             "{:.3g} N/m",
                             skin.pattern, skin.coupling, n_pins, mech.k_normal_N_m, mech.k_shear_N_m,
                             mech.k_bend_N_m, mech.membrane_N_m, mech.k_rock_N_m, mech.k_tip_N_m, mech.k_couple_N_m,
-                            skin.membrane_links, plan.c_tip, plan.c_normal, mech.k_rim_N_m));
+                            skin.membrane_links, skin.DomeSprings() ? "dome" : "axial", plan.c_tip, plan.c_normal, mech.k_rim_N_m));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
   if (!plan.shell_mode) return;
@@ -465,12 +475,13 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
   b.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.pin_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-9, 1e-9, 1e-9});
   if (plan.normal_dof[i]) {
+    // With dome springs the gel column's spring is the pin's tendon (DomeSpringTendon).
     b.Add("joint")
         .Set("name", names.PinJoint(i))
         .Set("user", std::vector<double>{kCompressionJointUser})
         .Set("type", "slide")
         .Set("axis", std::vector<double>{1, 0, 0})
-        .Set("stiffness", mech.k_normal_N_m)
+        .Set("stiffness", plan.skin.DomeSprings() ? 0.0 : mech.k_normal_N_m)
         .Set("damping", plan.c_normal);
   }
   if (!plan.shell_mode) {
@@ -558,6 +569,29 @@ std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLat
   return tendons;
 }
 
+// A pin's gel spring resting on the dome (skin.normal_spring = dome): L = q_n + (n_y q_y +
+// n_z q_z) / n_x over its normal and shear joints, stiffness k_n. A shear along the dome's
+// tangent plane leaves L unchanged, so the spring's rest point follows the dome.
+mjcf::Element DomeSpringTendon(const PinBodyPlan& plan, const PinGeometry& pin) {
+  const SkinNames& names = plan.names;
+  const auto& n = pin.normal;
+  mjcf::Element t("fixed");
+  t.Set("name", names.PinDomeSpring(pin.index)).Set("stiffness", plan.mech.k_normal_N_m);
+  t.Add("joint").Set("joint", names.PinJoint(pin.index)).Set("coef", 1.0);
+  t.Add("joint").Set("joint", names.PinShearJoint(pin.index, 'y')).Set("coef", n[1] / n[0]);
+  t.Add("joint").Set("joint", names.PinShearJoint(pin.index, 'z')).Set("coef", n[2] / n[0]);
+  return t;
+}
+
+std::vector<mjcf::Element> DomeSpringTendons(const PinBodyPlan& plan, const PinLattice& lattice) {
+  std::vector<mjcf::Element> tendons;
+  if (!plan.skin.DomeSprings()) return tendons;
+  for (const auto& pin : lattice.pins) {
+    if (plan.normal_dof[pin.index]) tendons.push_back(DomeSpringTendon(plan, pin));
+  }
+  return tendons;
+}
+
 }  // namespace
 
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
@@ -595,6 +629,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     if (collidable[pin.index]) ++part.n_collidable;
   }
   part.tendons = CouplingTendons(plan, lattice);
+  for (auto& t : DomeSpringTendons(plan, lattice)) part.tendons.push_back(std::move(t));
   return part;
 }
 

@@ -39,6 +39,7 @@ struct SkinConfig {
   std::string coupling = "shell";   ///< how pins are coupled through the skin: shell, membrane or none
   std::string rim = "free";         ///< the skin beyond the pattern: free, or clamped at the dome's base
   std::string membrane_links = "isotropic"; ///< membrane lattice: links pull on both in-plane components, or along themselves
+  std::string normal_spring = "axial";  ///< lattice pins' gel springs: rest point fixed (axial) or sliding over the dome (dome)
   std::string pattern = "smooth";   ///< smooth, fingerprint-v1, fingerprint-v2
   double ridge_spacing_mm = 3.0;    ///< fingerprint: radial step between ridge rings (arc length)
   double ridge_height_mm = 2.0;     ///< fingerprint: ridge height above the skin (v2: peak-to-trough)
@@ -135,9 +136,22 @@ struct SkinConfig {
       "central: along the link only, as the triangular spring network that k_link = (sqrt 3 / 2) E t is derived "
       "from; a ridge rocks only across itself, so the ridges enter by the link's radial share c: k = 1 / (1 / "
       "k_link + 2 c^2 / k_rock), which is k_couple for a radial link, k_link along a ring. At a step of 0.25 ms "
-      "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.3 mm/s (README 'Membrane "
+      "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.5 mm/s (README 'Membrane "
       "links'); opt-in, refused by 'validate contact' (its exact solution has isotropic links).",
       Choices{"isotropic", "central"});
+    v("normal_spring", normal_spring, "",
+      "Where each lattice pin's normal (gel column) spring rests once the pin shears (coupling membrane or none; "
+      "the shell ignores this). axial: at the pin's rest height along the sensor axis, so a pin sheared in the "
+      "sensor's y-z plane leaves the dome without loading its column. dome: on the dome - a shear (u_y, u_z) "
+      "moves the rest point by -(n_y u_y + n_z u_z) / n_x along the axis (n: the pin's dome normal; one fixed "
+      "tendon per pin over its three joints, stiffness k_n), so a pin slides freely over the dome's surface and "
+      "one sheared away from the apex recedes from the stimulus by tan(theta) of its shear: the object's weight "
+      "unloads the contact's lower (south) side and loads its upper side. The gel field then reads the spring's "
+      "compression. Along the dome normal the spring is k_n / cos^2(theta), so the normal damping floor rises "
+      "by 1 / cos^2 of the lattice's widest pin (README 'Dome springs'). Opt-in; refused on fingerprint-v1 (its "
+      "edge pins flicker in and out of contact while held) and by 'validate contact' (its exact solution has "
+      "axial springs).",
+      Choices{"axial", "dome"});
     v("pattern", pattern, "",
       "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "
       "ridge rings with the pins extending into them (they pivot: the inner marker and the outer contact point "
@@ -190,6 +204,8 @@ struct SkinConfig {
   double ContactRadiusMm() const;
   /// True for the fingerprint patterns.
   bool Fingerprint() const { return pattern != "smooth"; }
+  /// Lattice pins whose gel springs rest on the dome (skin.normal_spring = dome; the shell has none).
+  bool DomeSprings() const { return normal_spring == "dome" && coupling != "shell"; }
   /// Radial step between pin rings along the dome: ridge_spacing_mm (fingerprint) or pitch_mm.
   double RingStepMm() const { return Fingerprint() ? ridge_spacing_mm : pitch_mm; }
   /// Arc length from the apex to the dome's base, where the skin is clamped: pi R / 2.
@@ -335,6 +351,10 @@ struct SkinMechanics {
   int max_degree = 6;               ///< most neighbours of any pin
   bool central_links = false;       ///< membrane lattice: links act along themselves (skin.membrane_links)
   double central_row_max_N_m = 0.0; ///< central links: widest row sum of the shear stiffness matrix (From(skin, lattice))
+  /// skin.normal_spring = dome on a lattice with per-pin shear DOFs: 1 / cos^2 of the
+  /// lattice's widest pin, the stiffest gel spring along its dome normal over k_n
+  /// (From(skin, lattice)); 1 otherwise.
+  double dome_gain = 1.0;
   // The clamped rim (skin.rim = clamped; set by From(skin, lattice), else zero):
   double k_rim_N_m = 0.0;           ///< the skin annulus against a translation of the whole pattern (RimAnchor)
   double k_rim_pin_N_m = 0.0;       ///< membrane lattice: an outer-ring pin's share, in series with its ridge
@@ -344,7 +364,7 @@ struct SkinMechanics {
   /// With the lattice: the neighbour count enters the stiffest shear mode.
   static SkinMechanics From(const SkinConfig& skin, const struct PinLattice& lattice);
   /// Highest natural frequency of the pin lattice (rad/s): normal mode with every
-  /// neighbour in antiphase, omega = sqrt((k_n + 12 k_b) / m).
+  /// neighbour in antiphase, omega = sqrt((k_n dome_gain + 12 k_b) / m).
   double StiffestOmega() const;
   /// The smooth skin's shell against an in-plane translation: its n_pins gel columns in
   /// parallel, plus the clamped rim.
@@ -370,7 +390,8 @@ struct SkinMechanics {
   double TipDamping(double timestep_s) const;
   /// Normal damping per pin of a membrane lattice at this timestep: the physical value
   /// (damping_ratio on k_normal), raised where the stiffest bending-coupled normal mode
-  /// would otherwise be unstable.
+  /// would otherwise be unstable. With dome springs that mode runs along the dome normal,
+  /// which takes the normal joint's damping by cos^2(theta): the floor is times dome_gain.
   double NormalDamping(double timestep_s) const;
 };
 
@@ -422,6 +443,7 @@ struct SkinNames {
   std::string PinBody(int i) const;
   std::string PinJoint(int i) const;
   std::string PinShearJoint(int i, char axis) const;  ///< uncoupled skin: 'y' or 'z' shear DOF
+  std::string PinDomeSpring(int i) const;  ///< skin.normal_spring = dome: the pin's gel spring (a fixed tendon)
   std::string PinGeom(int i) const;
   std::string PinSite(int i) const;       ///< inner end of the pin (what the camera sees)
   std::string PinOuterSite(int i) const;  ///< outer contact point (external markers)

@@ -41,10 +41,12 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
   StiffMode pin;
   pin.omega = mech.StiffestOmega();
   const double c_normal = membrane ? mech.NormalDamping(spec.sim.timestep_s) : mech.pin_damping_Ns_m;
-  pin.zeta = c_normal / (2.0 * mech.pin_mass_kg * pin.omega);
+  // Dome springs: the stiffest pin moves along its dome normal, which takes the normal
+  // joint's damping by cos^2(theta) = 1 / dome_gain (and the shear joints' by the rest).
+  pin.zeta = c_normal / (mech.dome_gain * 2.0 * mech.pin_mass_kg * pin.omega);
   pin.damping_follows_timestep = membrane;
   pin.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, skin.thickness_mm, "
-             "skin.pin_mass_g)";
+             "skin.pin_mass_g, skin.normal_spring)";
   modes.push_back(pin);
   if (membrane) {
     StiffMode shear;

@@ -258,6 +258,10 @@ void CheckDomeSkin(const SkinConfig& skin) {
                      "': the lattice's exact quasi-static solution couples both in-plane components of a link "
                      "(isotropic links)");
   }
+  if (skin.normal_spring != "axial") {
+    throw InputError("dome check: skin.normal_spring = '" + skin.normal_spring +
+                     "': the lattice's exact quasi-static solution rests each gel spring at its pin's height (axial)");
+  }
 }
 
 namespace {

@@ -40,6 +40,7 @@ TactileSensorIds TactileSensorIds::Find(const CompiledModel& m, const std::strin
     }
     ids.pin_geom.push_back(g);
     if (g >= 0) ids.slot_of_geom[g] = i;
+    ids.pin_dome_spring.push_back(m.FindTendon(names.PinDomeSpring(i)));
   }
   return ids;
 }
@@ -74,6 +75,10 @@ void TactileSensor::Rest(const Simulation& sim) {
   pose_ = {sim.BodyPos(ids_.body), sim.BodyRot(ids_.body)};
   rest_marker_m_.clear();
   for (int i = 0; i < n_; ++i) rest_marker_m_.push_back(pose_.Point(sim.SitePos(ids_.pin_site[i])));
+  rest_dome_spring_m_.assign(n_, 0.0);
+  for (size_t i = 0; i < ids_.pin_dome_spring.size(); ++i) {
+    if (ids_.pin_dome_spring[i] >= 0) rest_dome_spring_m_[i] = sim.TendonLength(ids_.pin_dome_spring[i]);
+  }
 }
 
 void TactileSensor::ReadContacts(Simulation& sim) {
@@ -109,7 +114,7 @@ void TactileSensor::CapturePins(const Simulation& sim) {
                                    (p[2] - rest_marker_m_[i][2]) * (p[2] - rest_marker_m_[i][2]));
     marker_m_[i] = p;
   }
-  MoveMarkersWithGel();
+  MoveMarkersWithGel(sim);
   // A fingerprint ridge rocks under its tangential contact force (quasi-statically,
   // deflection f_t / k_rock at the contact point), which moves the inner marker the other
   // way. Then the image positions.
@@ -134,12 +139,18 @@ void TactileSensor::CapturePins(const Simulation& sim) {
   reading_.valid = valid_;
 }
 
-void TactileSensor::MoveMarkersWithGel() {
-  // Each pin's inward displacement along the sensor axis (its gel column's compression)
-  // squeezes gel sideways; the flow moves every marker (GelField).
+double TactileSensor::ColumnCompression(const Simulation& sim, int i) const {
+  const int spring = static_cast<size_t>(i) < ids_.pin_dome_spring.size() ? ids_.pin_dome_spring[i] : -1;
+  if (spring >= 0) return rest_dome_spring_m_[i] - sim.TendonLength(spring);
+  return rest_marker_m_[i][0] - marker_m_[i][0];
+}
+
+void TactileSensor::MoveMarkersWithGel(const Simulation& sim) {
+  // Each pin's gel column's compression squeezes gel sideways; the flow moves every
+  // marker (GelField).
   if (spec_.gel_field.empty()) return;
   indentation_m_.resize(n_);
-  for (int i = 0; i < n_; ++i) indentation_m_[i] = rest_marker_m_[i][0] - marker_m_[i][0];
+  for (int i = 0; i < n_; ++i) indentation_m_[i] = ColumnCompression(sim, i);
   spec_.gel_field.Shifts(indentation_m_, gel_shift_m_);
   for (int i = 0; i < n_; ++i) {
     for (int k = 0; k < 3; ++k) marker_m_[i][k] += gel_shift_m_[i][k];

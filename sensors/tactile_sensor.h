@@ -26,6 +26,7 @@ struct TactileSensorIds {
   std::vector<int> pin_outer_site;  ///< per pin: the outer contact point, or -1 (none)
   std::vector<int> pin_geom;        ///< per pin: the contact geom, or -1 (culled: cannot touch)
   std::vector<int> slot_of_geom;    ///< geom id -> pin index, or -1
+  std::vector<int> pin_dome_spring; ///< per pin: its gel spring's tendon (skin.normal_spring = dome), or -1
 
   /// Looks the sensor's elements up by name (body `body_name`, pins named by `names`);
   /// `outer[i]`: pin i carries an outer site. Throws ModelError naming a missing element.
@@ -95,7 +96,10 @@ class TactileSensor {
 
  private:
   void CapturePins(const Simulation& sim);
-  void MoveMarkersWithGel();
+  void MoveMarkersWithGel(const Simulation& sim);
+  /// How far pin i's gel column is compressed: its dome spring's shortening, or else its
+  /// marker's inward displacement along the sensor axis.
+  double ColumnCompression(const Simulation& sim, int i) const;
   void CaptureExternal(const Simulation& sim);
   void CaptureContacts();
   void FillFrame(double time_s);
@@ -117,6 +121,7 @@ class TactileSensor {
   // Per frame: pose, image positions and detections.
   SensorPose pose_;
   std::vector<std::array<double, 3>> rest_marker_m_;
+  std::vector<double> rest_dome_spring_m_;  ///< per pin: its dome spring's length at rest (0 without one)
   std::vector<std::array<double, 3>> marker_m_, gel_shift_m_;
   std::vector<double> indentation_m_;
   std::vector<float> px_, prev_px_, ext_px_, prev_ext_px_, clean_px_;

@@ -105,6 +105,7 @@ int CompiledModel::SiteId(const std::string& n) const { return NameToId(model_.g
 int CompiledModel::ActuatorId(const std::string& n) const {
   return NameToId(model_.get(), mjOBJ_ACTUATOR, n, "actuator");
 }
+int CompiledModel::FindTendon(const std::string& n) const { return mj_name2id(model_.get(), mjOBJ_TENDON, n.c_str()); }
 int CompiledModel::JointQposAdr(int j) const { return model_->jnt_qposadr[j]; }
 int CompiledModel::JointDofAdr(int j) const { return model_->jnt_dofadr[j]; }
 void CompiledModel::EnableEnergy() { model_->opt.enableflags |= mjENBL_ENERGY; }
@@ -280,6 +281,8 @@ void Simulation::CheckWarnings(double step_start_time) {
 
 double Simulation::Qpos(int adr) const { return data_->qpos[adr]; }
 double Simulation::Qvel(int dof) const { return data_->qvel[dof]; }
+
+double Simulation::TendonLength(int t) const { return data_->ten_length[t]; }
 
 std::array<double, 3> Simulation::SitePos(int s) const {
   const double* p = data_->site_xpos + 3 * s;

@@ -49,6 +49,8 @@ class CompiledModel {
   int GeomId(const std::string& name) const;
   int SiteId(const std::string& name) const;
   int ActuatorId(const std::string& name) const;
+  /// A tendon's id, or -1 when the model has none of that name.
+  int FindTendon(const std::string& name) const;
   /// Index of a joint's first qpos / first dof.
   int JointQposAdr(int joint) const;
   int JointDofAdr(int joint) const;
@@ -120,6 +122,8 @@ class Simulation {
   /// World position of a site / body origin (metres).
   std::array<double, 3> SitePos(int site) const;
   std::array<double, 3> BodyPos(int body) const;
+  /// A tendon's length (m for slide joints), as the last position pass computed it.
+  double TendonLength(int tendon) const;
   /// World rotation of a body, row-major 3x3.
   std::array<double, 9> BodyRot(int body) const;
 

@@ -11,6 +11,7 @@
 #include <array>
 #include <sstream>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <set>
@@ -364,6 +365,21 @@ TEST_F(FingerprintSkinPartTest, MembraneLatticeGivesShearDofsToEveryPinAndNormal
   EXPECT_EQ(bend, live_edges);
 }
 
+/// Adds each tendon's stiffness k c c^T to K, for the tendons `use` accepts by name, over
+/// their joints numbered by `dof`.
+void AddTendonStiffness(Eigen::MatrixXd& K, const SkinPart& part, const std::map<std::string, int>& dof,
+                        const std::function<bool(const std::string&)>& use) {
+  for (const auto& t : part.tendons) {
+    if (!use(t.Get("name"))) continue;
+    const double k = std::stod(t.Get("stiffness"));
+    for (const auto& ja : t.children()) {
+      for (const auto& jb : t.children()) {
+        K(dof.at(ja.Get("joint")), dof.at(jb.Get("joint"))) += k * std::stod(ja.Get("coef")) * std::stod(jb.Get("coef"));
+      }
+    }
+  }
+}
+
 /// The v2 preset with central membrane links, every pin collidable, at 0.25 ms.
 struct CentralV2 {
   SkinConfig skin = [] {
@@ -456,15 +472,7 @@ TEST_F(FingerprintSkinPartTest, CentralLinksStiffestShearBoundCoversTheLargestEi
   for (const auto& pin : v2.lattice.pins) {
     K(2 * pin.index, 2 * pin.index) = K(2 * pin.index + 1, 2 * pin.index + 1) = m.TipStiffness(pin.ring);
   }
-  for (const auto& t : v2.part.tendons) {
-    if (t.Get("name").rfind("membrane_", 0) != 0) continue;
-    const double k = std::stod(t.Get("stiffness"));
-    for (const auto& ja : t.children()) {
-      for (const auto& jb : t.children()) {
-        K(dof.at(ja.Get("joint")), dof.at(jb.Get("joint"))) += k * std::stod(ja.Get("coef")) * std::stod(jb.Get("coef"));
-      }
-    }
-  }
+  AddTendonStiffness(K, v2.part, dof, [](const std::string& name) { return name.rfind("membrane_", 0) == 0; });
   const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues().maxCoeff();
   const double widest_row = K.cwiseAbs().rowwise().sum().maxCoeff();
   const double bound = m.StiffestShearOmega() * m.StiffestShearOmega() * m.pin_mass_kg;
@@ -476,6 +484,100 @@ TEST_F(FingerprintSkinPartTest, CentralLinksStiffestShearBoundCoversTheLargestEi
   const double every_link_at_k_link =
       m.TipStiffness(m.rim_ring) + m.max_degree * (1.0 + std::numbers::sqrt2) * m.k_link_N_m;
   EXPECT_GT(every_link_at_k_link, 3.0 * largest);
+}
+
+/// The v2 preset with dome springs (skin.normal_spring = dome), every pin collidable, at 0.5 ms.
+struct DomeV2 {
+  SkinConfig skin = [] {
+    SkinConfig s = PresetSkin("fingerprint-v2");
+    s.normal_spring = "dome";
+    return s;
+  }();
+  PinLattice lattice = PinLattice::Build(skin);
+  SkinMechanics mech = SkinMechanics::From(skin, lattice);
+  SkinPart part = BuildSkin(skin, ContactConfig{}, lattice, std::vector<bool>(lattice.size(), true), 5e-4);
+};
+
+// Each pin with a normal DOF has its gel spring as one fixed tendon, L = q_n + (n_y q_y +
+// n_z q_z) / n_x at k_n, and its normal joint no spring of its own; the default axial
+// springs are the normal joints' own.
+TEST_F(FingerprintSkinPartTest, DomeSpringsAreOneTendonPerPinOverItsNormalAndShearJoints) {
+  const DomeV2 v2;
+  const SkinNames names;
+  std::map<std::string, const mjcf::Element*> springs;
+  for (const auto& t : v2.part.tendons) {
+    if (t.Get("name").find("_gel") != std::string::npos) springs[t.Get("name")] = &t;
+  }
+  ASSERT_EQ(springs.size(), v2.lattice.size());
+  for (const PinGeometry& pin : v2.lattice.pins) {
+    SCOPED_TRACE("pin " + std::to_string(pin.index));
+    const mjcf::Element& t = *springs.at(names.PinDomeSpring(pin.index));
+    EXPECT_DOUBLE_EQ(std::stod(t.Get("stiffness")), v2.mech.k_normal_N_m);
+    std::map<std::string, double> coef;
+    for (const auto& j : t.children()) coef[j.Get("joint")] = std::stod(j.Get("coef"));
+    ASSERT_EQ(coef.size(), 3u);
+    const auto& n = pin.normal;
+    EXPECT_DOUBLE_EQ(coef.at(names.PinJoint(pin.index)), 1.0);
+    EXPECT_NEAR(coef.at(names.PinShearJoint(pin.index, 'y')), n[1] / n[0], 1e-6);
+    EXPECT_NEAR(coef.at(names.PinShearJoint(pin.index, 'z')), n[2] / n[0], 1e-6);
+    // A motion in the dome's tangent plane leaves the spring's length unchanged.
+    const std::array<double, 3> tangent{-n[2], 0.0, n[0]};  // n x (unit y)
+    EXPECT_NEAR(tangent[0] + coef.at(names.PinShearJoint(pin.index, 'z')) * tangent[2], 0.0, 1e-6);
+  }
+  for (const auto& [i, body] : PinBodies(v2.part)) {
+    for (const auto& c : body->children()) {
+      if (c.tag() == "joint" && c.Get("name") == names.PinJoint(i)) {
+        EXPECT_EQ(std::stod(c.Get("stiffness")), 0.0);
+      }
+    }
+  }
+  SkinConfig axial = v2.skin;
+  axial.normal_spring = "axial";
+  const SkinPart plain = BuildSkin(axial, ContactConfig{}, v2.lattice, std::vector<bool>(v2.lattice.size(), true), 5e-4);
+  for (const auto& t : plain.tendons) EXPECT_EQ(t.Get("name").find("_gel"), std::string::npos) << t.Get("name");
+}
+
+// The dome springs stiffen the pin normal mode by 1 / cos^2 of the widest pin: the bound
+// (StiffestOmega) covers the largest eigenvalue of the springs and the bending together, and
+// the damping floor rises by the same factor, since the joint along the sensor axis takes
+// cos^2 of the mode's damping.
+TEST_F(FingerprintSkinPartTest, DomeSpringsNormalModeBoundCoversTheLargestEigenvalue) {
+  const DomeV2 v2;
+  const SkinMechanics& m = v2.mech;
+  double widest = 0.0;
+  for (const auto& pin : v2.lattice.pins) widest = std::max(widest, std::acos(pin.normal[0]));
+  EXPECT_NEAR(m.dome_gain, 1.0 / (std::cos(widest) * std::cos(widest)), 1e-9);
+  ASSERT_GT(m.dome_gain, 2.0) << "premise: v2's outer ring lies beyond 45 degrees";
+  // Normal then shear joints, by name.
+  const int n = static_cast<int>(v2.lattice.size());
+  std::map<std::string, int> dof;
+  for (int i = 0; i < n; ++i) {
+    dof[SkinNames{}.PinJoint(i)] = 3 * i;
+    dof[SkinNames{}.PinShearJoint(i, 'y')] = 3 * i + 1;
+    dof[SkinNames{}.PinShearJoint(i, 'z')] = 3 * i + 2;
+  }
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  AddTendonStiffness(K, v2.part, dof, [](const std::string& name) {
+    return name.find("_gel") != std::string::npos || name.rfind("bend_", 0) == 0;
+  });
+  const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues().maxCoeff();
+  const double bound = m.StiffestOmega() * m.StiffestOmega() * m.pin_mass_kg;
+  EXPECT_GE(bound, largest);
+  EXPECT_GT(largest, m.k_normal_N_m + 12.0 * m.k_bend_N_m) << "the axial bound would not cover it";
+  SkinConfig axial = v2.skin;
+  axial.normal_spring = "axial";
+  const SkinMechanics plain = SkinMechanics::From(axial, v2.lattice);
+  EXPECT_EQ(plain.dome_gain, 1.0);
+  // At 2 ms the axial lattice's physical damping is stable; the dome springs' mode needs the floor.
+  const double dt = 2e-3;
+  EXPECT_EQ(plain.NormalDamping(dt), plain.pin_damping_Ns_m);
+  ASSERT_GT(m.NormalDamping(dt), m.pin_damping_Ns_m) << "premise: 2 ms needs the floor";
+  const double zeta = m.NormalDamping(dt) / (m.dome_gain * 2.0 * m.pin_mass_kg * m.StiffestOmega());
+  EXPECT_NEAR(MaxStableTimestep(m.StiffestOmega(), zeta), SkinMechanics::kDampingRaiseMargin * dt, 1e-9 * dt);
+  // The shell has no per-pin shear joints to slide over the dome: the key is ignored.
+  SkinConfig shell = v2.skin;
+  shell.coupling = "shell";
+  EXPECT_EQ(SkinMechanics::From(shell, v2.lattice).dome_gain, 1.0);
 }
 
 TEST(FingerprintMechanicsTest, CentralLinkStiffnessIsTheLinkInSeriesWithTheRidgesRadialShare) {
@@ -562,6 +664,19 @@ TEST(FingerprintConfigTest, PatternBeyondTheEquatorIsRejectedNamingTheKey) {
   s.pattern_radius_mm = 18.0;
   s.rings = 12;
   EXPECT_NO_THROW(ValidateConfig(s));
+}
+
+// Measured: v1's pivoting edge pins flicker in and out of contact while held on dome
+// springs, so v1 refuses them naming the key and the safe value; v2 takes them.
+TEST(FingerprintConfigTest, DomeSpringsAreRefusedOnV1NamingTheKey) {
+  SkinConfig v1 = PresetSkin("fingerprint-v1");
+  v1.normal_spring = "dome";
+  const std::string msg = InputErrorOf([&] { ValidateConfig(v1); });
+  EXPECT_EQ(msg.rfind("skin.normal_spring = 'dome': fingerprint-v1", 0), 0u) << msg;
+  EXPECT_NE(msg.find("use axial"), std::string::npos) << msg;
+  SkinConfig v2 = PresetSkin("fingerprint-v2");
+  v2.normal_spring = "dome";
+  EXPECT_NO_THROW(ValidateConfig(v2));
 }
 
 TEST(FingerprintConfigTest, PatternNarrowerThanOneRingIsRejected) {

@@ -365,11 +365,27 @@ TEST(DomeCheckTest, CentralMembraneLinksAreRefusedNamingTheKey) {
   }
 }
 
+// Its gel springs rest at each pin's height: dome springs are refused too.
+TEST(DomeCheckTest, DomeNormalSpringsAreRefusedNamingTheKey) {
+  SkinConfig skin;
+  skin.coupling = "membrane";
+  skin.normal_spring = "dome";
+  try {
+    CheckDomeSkin(skin);
+    ADD_FAILURE() << "dome springs accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("skin.normal_spring = 'dome'"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(ValidateContactCliTest, CentralMembraneLinksAreRefusedInOneLine) {
   const testing::CliResult r =
       Run("validate contact --skin fingerprint-v2 --set skin.membrane_links=central");
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("skin.membrane_links = 'central'"), std::string::npos) << r.err;
+  const testing::CliResult dome = Run("validate contact --skin fingerprint-v2 --set skin.normal_spring=dome");
+  EXPECT_EQ(dome.code, 2) << dome.out << dome.err;
+  EXPECT_NE(dome.err.find("skin.normal_spring = 'dome'"), std::string::npos) << dome.err;
 }
 
 }  // namespace
