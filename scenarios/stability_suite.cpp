@@ -54,6 +54,13 @@ std::vector<StabilityCase> BuildCases() {
        {"skin.gel_modulus_kpa=10000"}},
       {"v1-skin-x100", "fingerprint-v1 with the skin 100x stiffer (membrane links x100)", "fingerprint-v1",
        {"skin.skin_modulus_mpa=100"}},
+      // Dome springs: each pin's gel spring along its dome normal is k_n / cos^2(theta), and the
+      // normal joint takes cos^2(theta) of that mode's damping.
+      {"v2-dome", "fingerprint-v2 with dome springs", "fingerprint-v2", {"skin.normal_spring=dome"}},
+      {"v2-dome-central-0.25ms", "the same with central links at 0.25 ms, its best E/W and S/N figures",
+       "fingerprint-v2", {"skin.normal_spring=dome", "skin.membrane_links=central", "sim.timestep_s=0.00025"}},
+      {"v1-dome", "fingerprint-v1 with dome springs (refused: its edge pins flicker while held)", "fingerprint-v1",
+       {"skin.normal_spring=dome"}},
       // A clamped rim on a thin, stiff skin: the annulus (E t) outgrows the bending coupling (E t^3)
       // and the smooth shell's in-plane mode limits the step.
       {"rim-thin-x100", "clamped rim, 0.1 mm skin 100x stiffer: the shell's in-plane mode omega x11", "",
