@@ -111,7 +111,7 @@ void SkinConfig::ValidateRules() const {
   if (contact_radius_mm >= radius_mm) {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
   }
-  if (normal_spring == "dome" && pattern == "fingerprint-v1") {
+  if (DomeSprings() && pattern == "fingerprint-v1") {
     // Measured (README 'Dome springs'): 10 of 10 v1 incipient runs flagged by run health.
     FailRule("skin.normal_spring", normal_spring,
              "fingerprint-v1's edge pins flicker in and out of contact while held on dome springs (their runs "
@@ -327,6 +327,19 @@ double CentralRowMax(const SkinMechanics& m, const PinLattice& lattice) {
 }
 }  // namespace
 
+namespace {
+// Dome springs over the whole lattice (every pin may carry one): the widest pin's 1 / cos^2,
+// and the widest shear row of a spring's k_n v v^T, v = (1, a, b), a = n_y / n_x, b = n_z / n_x
+// (Gershgorin: k_n |a| (1 + |a| + |b|)).
+void SetDomeBounds(SkinMechanics& m, const PinLattice& lattice) {
+  for (const auto& pin : lattice.pins) {
+    const double a = std::abs(pin.normal[1] / pin.normal[0]), b = std::abs(pin.normal[2] / pin.normal[0]);
+    m.dome_gain = std::max(m.dome_gain, 1.0 + a * a + b * b);
+    m.dome_shear_row_N_m = std::max(m.dome_shear_row_N_m, m.k_normal_N_m * std::max(a, b) * (1.0 + a + b));
+  }
+}
+}  // namespace
+
 SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& lattice) {
   SkinMechanics m = From(skin, lattice.size());
   std::vector<int> degree(lattice.size(), 0);
@@ -343,9 +356,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& latt
     m.k_rim_pin_N_m = m.k_rock_N_m > 0.0 ? Series(share, m.k_rock_N_m) : share;
   }
   if (m.central_links) m.central_row_max_N_m = CentralRowMax(m, lattice);
-  if (skin.DomeSprings()) {
-    for (const auto& pin : lattice.pins) m.dome_gain = std::max(m.dome_gain, 1.0 / (pin.normal[0] * pin.normal[0]));
-  }
+  if (skin.DomeSprings()) SetDomeBounds(m, lattice);
   return m;
 }
 
@@ -361,9 +372,9 @@ double SkinMechanics::StiffestShearOmega() const {
     const double row = central_row_max_N_m > 0.0
                            ? central_row_max_N_m
                            : k_tip_N_m + k_rim_pin_N_m + max_degree * (1.0 + std::numbers::sqrt2) * k_link_N_m;
-    return std::sqrt(row / pin_mass_kg);
+    return std::sqrt((row + dome_shear_row_N_m) / pin_mass_kg);
   }
-  return std::sqrt((k_tip_N_m + k_rim_pin_N_m + 2.0 * max_degree * k_couple_N_m) / pin_mass_kg);
+  return std::sqrt((k_tip_N_m + k_rim_pin_N_m + 2.0 * max_degree * k_couple_N_m + dome_shear_row_N_m) / pin_mass_kg);
 }
 
 double SkinMechanics::CentralLinkStiffness(double radial_share) const {
@@ -396,17 +407,25 @@ double StableDamping(double w, double mass, double timestep_s) {
 }  // namespace
 
 double SkinMechanics::TipDamping(double timestep_s) const {
-  return std::max(tip_damping_Ns_m, StableDamping(StiffestShearOmega(), pin_mass_kg, timestep_s));
+  // A dome spring's mode runs through the shear joints too (DomeSpringDamping): they take the
+  // normal mode's floor as well.
+  const double dome_floor = dome_gain > 1.0 ? StableDamping(StiffestOmega(), pin_mass_kg, timestep_s) : 0.0;
+  return std::max({tip_damping_Ns_m, StableDamping(StiffestShearOmega(), pin_mass_kg, timestep_s), dome_floor});
 }
 
 double SkinMechanics::NormalDamping(double timestep_s) const {
-  return std::max(pin_damping_Ns_m, dome_gain * StableDamping(StiffestOmega(), pin_mass_kg, timestep_s));
+  return std::max(pin_damping_Ns_m, StableDamping(StiffestOmega(), pin_mass_kg, timestep_s));
+}
+
+double SkinMechanics::DomeSpringDamping(double c_normal, double c_tip) const {
+  if (!(dome_gain > 1.0)) return c_normal;
+  return 1.0 / (1.0 / c_normal + (dome_gain - 1.0) / c_tip);
 }
 
 std::string SkinNames::PinBody(int i) const { return prefix + fmt::format("pin{}", i); }
 std::string SkinNames::PinJoint(int i) const { return prefix + fmt::format("pin{}_n", i); }
 std::string SkinNames::PinShearJoint(int i, char axis) const { return prefix + fmt::format("pin{}_t{}", i, axis); }
-std::string SkinNames::PinDomeSpring(int i) const { return prefix + fmt::format("pin{}_gel", i); }
+std::string SkinNames::PinDomeSpring(int i) const { return prefix + fmt::format("pin{}_dome_spring", i); }
 std::string SkinNames::PinGeom(int i) const { return prefix + fmt::format("pin{}_pad", i); }
 std::string SkinNames::PinSite(int i) const { return prefix + fmt::format("pin{}_inner", i); }
 std::string SkinNames::PinOuterSite(int i) const { return prefix + fmt::format("pin{}_outer", i); }
@@ -443,7 +462,8 @@ void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
   shell.Set("name", plan.names.Shell());
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
-                            "{} membrane links, {} normal springs, shear damping {:.3g} N s/m, normal damping {:.3g} N s/m, clamped rim "
+                            "{} membrane links, {} normal springs, "
+                            "shear damping {:.3g} N s/m, normal damping {:.3g} N s/m, clamped rim "
                             "{:.3g} N/m",
                             skin.pattern, skin.coupling, n_pins, mech.k_normal_N_m, mech.k_shear_N_m,
                             mech.k_bend_N_m, mech.membrane_N_m, mech.k_rock_N_m, mech.k_tip_N_m, mech.k_couple_N_m,

@@ -147,10 +147,10 @@ struct SkinConfig {
       "tendon per pin over its three joints, stiffness k_n), so a pin slides freely over the dome's surface and "
       "one sheared away from the apex recedes from the stimulus by tan(theta) of its shear: the object's weight "
       "unloads the contact's lower (south) side and loads its upper side. The gel field then reads the spring's "
-      "compression. Along the dome normal the spring is k_n / cos^2(theta), so the normal damping floor rises "
-      "by 1 / cos^2 of the lattice's widest pin (README 'Dome springs'). Opt-in; refused on fingerprint-v1 (its "
-      "edge pins flicker in and out of contact while held) and by 'validate contact' (its exact solution has "
-      "axial springs).",
+      "compression. Along the dome normal the spring is k_n / cos^2(theta): the pin normal mode's bound takes "
+      "the lattice's widest pin, and the shear joints take that mode's damping floor too (README 'Dome "
+      "springs'). Opt-in; refused on fingerprint-v1 (its edge pins flicker in and out of contact while held) "
+      "and by 'validate contact' and 'accuracy domes' (their exact solution has axial springs).",
       Choices{"axial", "dome"});
     v("pattern", pattern, "",
       "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "
@@ -351,10 +351,12 @@ struct SkinMechanics {
   int max_degree = 6;               ///< most neighbours of any pin
   bool central_links = false;       ///< membrane lattice: links act along themselves (skin.membrane_links)
   double central_row_max_N_m = 0.0; ///< central links: widest row sum of the shear stiffness matrix (From(skin, lattice))
-  /// skin.normal_spring = dome on a lattice with per-pin shear DOFs: 1 / cos^2 of the
-  /// lattice's widest pin, the stiffest gel spring along its dome normal over k_n
-  /// (From(skin, lattice)); 1 otherwise.
+  /// skin.normal_spring = dome on a lattice with per-pin shear DOFs (From(skin, lattice);
+  /// else 1 and 0): 1 / cos^2 of the lattice's widest pin, its spring along the dome normal
+  /// over k_n; and the widest shear-joint row of one pin's spring, k_n |a| (1 + |a| + |b|)
+  /// with a, b = n_y / n_x, n_z / n_x.
   double dome_gain = 1.0;
+  double dome_shear_row_N_m = 0.0;
   // The clamped rim (skin.rim = clamped; set by From(skin, lattice), else zero):
   double k_rim_N_m = 0.0;           ///< the skin annulus against a translation of the whole pattern (RimAnchor)
   double k_rim_pin_N_m = 0.0;       ///< membrane lattice: an outer-ring pin's share, in series with its ridge
@@ -372,7 +374,8 @@ struct SkinMechanics {
   /// A pin's own shear stiffness (membrane or uncoupled lattice): k_tip, plus its share of the
   /// clamped rim on the outermost ring.
   double TipStiffness(int ring) const { return ring == rim_ring ? k_tip_N_m + k_rim_pin_N_m : k_tip_N_m; }
-  /// Highest shear-mode frequency of a membrane lattice (Gershgorin bound), rad/s.
+  /// Highest shear-mode frequency of a membrane lattice (Gershgorin bound, with the dome
+  /// springs' shear rows), rad/s.
   double StiffestShearOmega() const;
   /// A central link's stiffness along itself (skin.membrane_links = central), N/m: the
   /// membrane spring in series with the two ridges' rocking, which takes the link's radial
@@ -390,9 +393,13 @@ struct SkinMechanics {
   double TipDamping(double timestep_s) const;
   /// Normal damping per pin of a membrane lattice at this timestep: the physical value
   /// (damping_ratio on k_normal), raised where the stiffest bending-coupled normal mode
-  /// would otherwise be unstable. With dome springs that mode runs along the dome normal,
-  /// which takes the normal joint's damping by cos^2(theta): the floor is times dome_gain.
+  /// would otherwise be unstable. With dome springs TipDamping takes the same floor.
   double NormalDamping(double timestep_s) const;
+  /// The damping a dome spring's own coordinate L sees through its joints' implicit
+  /// dampers (normal c_normal, shear c_tip) at the widest pin: 1 / (1 / c_n + (g - 1) / c_t),
+  /// g = dome_gain, against the mass m / g; c_normal without dome springs. With both dampers at
+  /// the floor c it is c / g, which is the floor for that mass.
+  double DomeSpringDamping(double c_normal, double c_tip) const;
 };
 
 /// The skin keys of the `--skin NAME` presets: "skin.key=value" overrides for smooth,

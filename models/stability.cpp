@@ -41,9 +41,10 @@ std::vector<StiffMode> RailModes(const RailSceneSpec& spec) {
   StiffMode pin;
   pin.omega = mech.StiffestOmega();
   const double c_normal = membrane ? mech.NormalDamping(spec.sim.timestep_s) : mech.pin_damping_Ns_m;
-  // Dome springs: the stiffest pin moves along its dome normal, which takes the normal
-  // joint's damping by cos^2(theta) = 1 / dome_gain (and the shear joints' by the rest).
-  pin.zeta = c_normal / (mech.dome_gain * 2.0 * mech.pin_mass_kg * pin.omega);
+  // Dome springs: the stiffest pin moves along its dome normal, on the mass m / g, damped
+  // through its normal and shear joints in series (SkinMechanics::DomeSpringDamping).
+  const double c_tip = membrane ? mech.TipDamping(spec.sim.timestep_s) : mech.tip_damping_Ns_m;
+  pin.zeta = mech.DomeSpringDamping(c_normal, c_tip) * mech.dome_gain / (2.0 * mech.pin_mass_kg * pin.omega);
   pin.damping_follows_timestep = membrane;
   pin.name = "the skin's pin normal mode (set by skin.gel_modulus_kpa, skin.skin_modulus_mpa, skin.thickness_mm, "
              "skin.pin_mass_g, skin.normal_spring)";

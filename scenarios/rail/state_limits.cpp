@@ -16,7 +16,7 @@ StateLimits StateLimits::For(const RailScenarioConfig& cfg, int n_collidable, do
   const PinLattice lattice = PinLattice::Build(cfg.skin);
   const SkinMechanics mech = SkinMechanics::From(cfg.skin, lattice);
   const double omega = mech.StiffestOmega();
-  const double k_pin = omega * omega * mech.pin_mass_kg;  // k_normal + 12 k_bend
+  const double k_pin = omega * omega * mech.pin_mass_kg;  // k_normal dome_gain + 12 k_bend
   const double deepest_mm = cfg.rail.press_depth_mm + cfg.rail.press_depth_jitter_mm;
   const double press_m = std::max(0.0, deepest_mm) * 1e-3 + extra_press_m + kContactMarginM;
   const double weight_N = cfg.object.mass_kg * kGravity + cfg.rail.friction_N;

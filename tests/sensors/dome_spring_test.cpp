@@ -1,10 +1,14 @@
 // skin.normal_spring = dome: each pin's gel spring rests on the dome, so a pin sheared over
-// the dome's surface does not load it. Analytic anchor: an uncoupled lattice sagging under
-// its own weight, u_z = -m g / k_tip, sinks along the dome's tangent plane, u_x =
-// -(n_z / n_x) u_z, and the sensor's gel field reads no compression from it.
+// the dome's surface does not load it. Analytic anchors on an uncoupled lattice under its
+// own weight: sagging sideways (gravity -z), u_z = -m g / k_tip, each pin sinks along the
+// dome's tangent plane, u_x = -(n_z / n_x) u_z, and the gel field reads no compression;
+// pressed along the axis (gravity -x), each spring shortens by m g / k_n whatever the pin's
+// shear, and the gel field reads exactly that.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -22,14 +26,15 @@ namespace {
 constexpr double kGravity = 9.81;
 
 // An uncoupled smooth lattice (coupling none: every pin on its own normal and shear
-// springs) hanging in a body named "sensor", gravity along -z.
+// springs) hanging in a body named "sensor", gravity along -z (sideways) or -x (into the gel).
 struct HangingSkin {
   SkinConfig skin;
   PinLattice lattice;
+  char down;
   CompiledModel model;
 
-  explicit HangingSkin(const std::string& normal_spring)
-      : skin(Skin(normal_spring)), lattice(PinLattice::Build(skin)), model(CompiledModel::FromXml(Xml())) {}
+  HangingSkin(const std::string& normal_spring, char down_axis)
+      : skin(Skin(normal_spring)), lattice(PinLattice::Build(skin)), down(down_axis), model(CompiledModel::FromXml(Xml())) {}
 
   static SkinConfig Skin(const std::string& normal_spring) {
     SkinConfig s;
@@ -44,9 +49,9 @@ struct HangingSkin {
     std::string tendons;
     for (const auto& t : part.tendons) tendons += t.ToXml(2);
     return fmt::format(
-        "<mujoco model=\"hanging skin\"><option timestep=\"0.0002\" integrator=\"Euler\" gravity=\"0 0 {}\"/>"
+        "<mujoco model=\"hanging skin\"><option timestep=\"0.0002\" integrator=\"Euler\" gravity=\"{} 0 {}\"/>"
         "<worldbody><body name=\"sensor\">{}</body></worldbody><tendon>{}</tendon></mujoco>",
-        -kGravity, part.body.ToXml(2), tendons);
+        down == 'x' ? -kGravity : 0.0, down == 'z' ? -kGravity : 0.0, part.body.ToXml(2), tendons);
   }
 };
 
@@ -55,6 +60,13 @@ struct HangingSkin {
 struct Sag {
   std::vector<std::array<double, 3>> marker, pin;
 };
+
+// The gel field's shift of every marker for these column compressions.
+std::vector<std::array<double, 3>> GelShifts(const HangingSkin& h, const std::vector<double>& compression_m) {
+  std::vector<std::array<double, 3>> shift;
+  GelField::Build(h.skin, h.lattice).Shifts(compression_m, shift);
+  return shift;
+}
 
 Sag SagForOneSecond(const HangingSkin& h) {
   Simulation sim(h.model);
@@ -83,7 +95,7 @@ Sag SagForOneSecond(const HangingSkin& h) {
 }
 
 TEST(DomeSpringTest, PinsSagAlongTheDomeUnderTheirOwnWeightAndTheGelReadsNoCompression) {
-  const HangingSkin h("dome");
+  const HangingSkin h("dome", 'z');
   const SkinMechanics mech = SkinMechanics::From(h.skin, h.lattice);
   const double u_z = -mech.pin_mass_kg * kGravity / mech.k_tip_N_m;
   ASSERT_GT(std::abs(u_z), 1e-4) << "the sag must be large enough to measure";
@@ -107,10 +119,42 @@ TEST(DomeSpringTest, PinsSagAlongTheDomeUnderTheirOwnWeightAndTheGelReadsNoCompr
   EXPECT_EQ(receding, advancing);
 }
 
+// Pressed along the axis by its own weight, each pin's dome spring shortens by m g / k_n
+// (its normal row: the spring alone carries the axial force) while the pin also slides
+// outwards over the dome, u_y = (n_y / n_x) m g / k_tip; the gel field moves the markers by
+// exactly the flow of those compressions, not of the larger axial displacements.
+TEST(DomeSpringTest, PressedAlongTheAxisEachSpringShortensByItsLoadAndTheGelReadsThat) {
+  const HangingSkin h("dome", 'x');
+  const SkinMechanics mech = SkinMechanics::From(h.skin, h.lattice);
+  const double f = mech.pin_mass_kg * kGravity;
+  const Sag sag = SagForOneSecond(h);
+  std::vector<double> compression(h.lattice.size(), f / mech.k_normal_N_m);
+  const auto shift = GelShifts(h, compression);
+  double largest_shift = 0.0;
+  int outwards = 0;
+  for (const PinGeometry& pin : h.lattice.pins) {
+    SCOPED_TRACE(fmt::format("pin {}", pin.index));
+    const auto& n = pin.normal;
+    const auto& d = sag.pin[pin.index];
+    const double u_y = n[1] / n[0] * f / mech.k_tip_N_m, u_z = n[2] / n[0] * f / mech.k_tip_N_m;
+    EXPECT_NEAR(d[1], u_y, 0.01 * f / mech.k_tip_N_m);
+    EXPECT_NEAR(d[2], u_z, 0.01 * f / mech.k_tip_N_m);
+    // L = u_x + (n_y u_y + n_z u_z) / n_x = -m g / k_n.
+    EXPECT_NEAR(d[0] + (n[1] * d[1] + n[2] * d[2]) / n[0], -f / mech.k_normal_N_m, 0.01 * f / mech.k_normal_N_m);
+    outwards += std::hypot(u_y, u_z) > 0.5 * f / mech.k_normal_N_m ? 1 : 0;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(sag.marker[pin.index][k] - d[k], shift[pin.index][k], 1e-3 * f / mech.k_normal_N_m) << "axis " << k;
+      largest_shift = std::max(largest_shift, std::abs(shift[pin.index][k]));
+    }
+  }
+  EXPECT_GT(outwards, 10) << "the outer pins must slide visibly";
+  EXPECT_GT(largest_shift, 0.1 * f / mech.k_normal_N_m) << "the gel must move the markers measurably";
+}
+
 // The axial springs (the default) hold each pin at its height: it sags straight down, and
-// the gel field is unchanged by the key.
+// with no column compressed the markers move with the pins.
 TEST(DomeSpringTest, AxialSpringsKeepEachPinsHeightAsItSags) {
-  const HangingSkin h("axial");
+  const HangingSkin h("axial", 'z');
   const SkinMechanics mech = SkinMechanics::From(h.skin, h.lattice);
   const double u_z = -mech.pin_mass_kg * kGravity / mech.k_tip_N_m;
   const Sag sag = SagForOneSecond(h);
@@ -118,6 +162,7 @@ TEST(DomeSpringTest, AxialSpringsKeepEachPinsHeightAsItSags) {
     SCOPED_TRACE(fmt::format("pin {}", pin.index));
     EXPECT_NEAR(sag.pin[pin.index][2], u_z, 0.01 * std::abs(u_z));
     EXPECT_NEAR(sag.pin[pin.index][0], 0.0, 1e-3 * std::abs(u_z));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(sag.marker[pin.index][k], sag.pin[pin.index][k], 1e-7) << "axis " << k;
   }
 }
 
