@@ -325,9 +325,7 @@ double CentralRowMax(const SkinMechanics& m, const PinLattice& lattice) {
   }
   return widest;
 }
-}  // namespace
 
-namespace {
 // Dome springs over the whole lattice (every pin may carry one): the widest pin's 1 / cos^2,
 // and the widest shear row of a spring's k_n v v^T, v = (1, a, b), a = n_y / n_x, b = n_z / n_x
 // (Gershgorin: k_n |a| (1 + |a| + |b|)).
@@ -462,12 +460,12 @@ void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
   shell.Set("name", plan.names.Shell());
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
-                            "{} membrane links, {} normal springs, "
-                            "shear damping {:.3g} N s/m, normal damping {:.3g} N s/m, clamped rim "
-                            "{:.3g} N/m",
+                            "{} membrane links, {} normal springs, shear damping {:.3g} N s/m, normal damping "
+                            "{:.3g} N s/m, clamped rim {:.3g} N/m",
                             skin.pattern, skin.coupling, n_pins, mech.k_normal_N_m, mech.k_shear_N_m,
                             mech.k_bend_N_m, mech.membrane_N_m, mech.k_rock_N_m, mech.k_tip_N_m, mech.k_couple_N_m,
-                            skin.membrane_links, skin.DomeSprings() ? "dome" : "axial", plan.c_tip, plan.c_normal, mech.k_rim_N_m));
+                            skin.membrane_links, skin.DomeSprings() ? "dome" : "axial", plan.c_tip, plan.c_normal,
+                            mech.k_rim_N_m));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
   if (!plan.shell_mode) return;

@@ -54,8 +54,8 @@ std::vector<StabilityCase> BuildCases() {
        {"skin.gel_modulus_kpa=10000"}},
       {"v1-skin-x100", "fingerprint-v1 with the skin 100x stiffer (membrane links x100)", "fingerprint-v1",
        {"skin.skin_modulus_mpa=100"}},
-      // Dome springs: each pin's gel spring along its dome normal is k_n / cos^2(theta), and the
-      // normal joint takes cos^2(theta) of that mode's damping.
+      // Dome springs: each pin's gel spring along its dome normal is k_n / cos^2(theta), damped
+      // through its normal and shear joints in series (SkinMechanics::DomeSpringDamping).
       {"v2-dome", "fingerprint-v2 with dome springs", "fingerprint-v2", {"skin.normal_spring=dome"}},
       {"v2-dome-central-0.25ms", "the same with central links at 0.25 ms, its best E/W and S/N figures",
        "fingerprint-v2", {"skin.normal_spring=dome", "skin.membrane_links=central", "sim.timestep_s=0.00025"}},
