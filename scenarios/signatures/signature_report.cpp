@@ -43,6 +43,8 @@ SignatureAcceptance JudgeSignatures(const std::vector<SignatureRun>& runs) {
       if (r.incipient->sectors.EastWestFirst()) ++a.east_west_first.passed;
       if (r.incipient->sectors.EastWestTiedWithNorthSouth()) ++a.east_west_tied;
       if (r.incipient->sectors.at_steps) ++a.sectors_at_steps;
+      if (r.incipient->sectors.SouthBeforeNorth()) ++a.south_before_north;
+      if (r.incipient->sectors.HardwareOrder()) ++a.hardware_order;
     }
   }
   // Runs needed from the required shares ("most" = more than half).

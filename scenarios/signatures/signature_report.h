@@ -60,6 +60,9 @@ struct SignatureAcceptance {
   int east_west_tied = 0;
   /// Incipient runs whose sectors were ordered by physics step (the rest by frame).
   int sectors_at_steps = 0;
+  /// Incipient runs with south before north, and with the hardware's whole order (east
+  /// and west, then south, then north); no acceptance threshold, reported beside it.
+  int south_before_north = 0, hardware_order = 0;
 };
 
 /// Counts SignatureAcceptance over `runs`.

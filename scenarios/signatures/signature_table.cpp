@@ -196,6 +196,10 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
                      fmt::format("E/W first {} of {}, tied with S/N {} ({})", a.east_west_first.passed,
                                  a.east_west_first.runs, a.east_west_tied, SectorResolution(a)),
                      "E and W first, then S, then N", "E/W in most runs: " + Verdict(a.east_west_first));
+  out += SummaryLine("sector order",
+                     fmt::format("S before N {} of {}; E and W, then S, then N {} of {}", a.south_before_north,
+                                 a.east_west_first.runs, a.hardware_order, a.east_west_first.runs),
+                     "S before N; that whole order");
   out += SummaryLine("internal/external correlation",
                      c.correlation.empty() ? std::string("n/a (no external markers)") : Spread(c.correlation),
                      "v2 alike (~1), v1 differ");

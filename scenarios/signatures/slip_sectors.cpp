@@ -61,6 +61,15 @@ SectorOrder OrderByFirst(const std::array<double, kSectors.size()>& first) {
   return out;
 }
 
+constexpr size_t kNotSlipped = std::numeric_limits<size_t>::max();
+
+// The position of `sector` among the order's '<'-separated groups (kNotSlipped: absent).
+size_t SlipGroup(const std::string& order, char sector) {
+  const size_t at = order.find(sector);
+  if (at == std::string::npos) return kNotSlipped;
+  return static_cast<size_t>(std::count(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(at), '<'));
+}
+
 }  // namespace
 
 bool SectorOrder::EastWestFirst() const {
@@ -69,6 +78,18 @@ bool SectorOrder::EastWestFirst() const {
 
 bool SectorOrder::EastWestTiedWithNorthSouth() const {
   return first.find_first_of("EW") != std::string::npos && first.find_first_of("SN") != std::string::npos;
+}
+
+bool SectorOrder::SouthBeforeNorth() const {
+  const size_t south = SlipGroup(order, 'S');
+  return south != kNotSlipped && south < SlipGroup(order, 'N');
+}
+
+bool SectorOrder::HardwareOrder() const {
+  const size_t east = SlipGroup(order, 'E'), west = SlipGroup(order, 'W');
+  const size_t south = SlipGroup(order, 'S'), north = SlipGroup(order, 'N');
+  if (east == kNotSlipped || west == kNotSlipped || north == kNotSlipped) return false;
+  return std::max(east, west) < south && south < north;
 }
 
 char ImageSector(double du_px, double dv_px) {

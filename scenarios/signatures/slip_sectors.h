@@ -26,6 +26,11 @@ struct SectorOrder {
   /// True when `first` holds east or west together with south or north: they started to
   /// slip in the same frame (or step), so it cannot order them.
   bool EastWestTiedWithNorthSouth() const;
+  /// True when south slipped in an earlier frame (or step) than north, or north never did.
+  bool SouthBeforeNorth() const;
+  /// True when all four sectors slipped in the hardware's order: east and west (in either
+  /// order) before south, south before north, each '<' a later frame (or step).
+  bool HardwareOrder() const;
 };
 
 /// Sector ('E', 'W', 'S' or 'N') of image offset (du, dv) from the contact centre: the

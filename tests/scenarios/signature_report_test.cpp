@@ -253,6 +253,38 @@ TEST(SlipSectorsTest, FirstSlipStepsOrderSectorsThatShareAFrame) {
   EXPECT_THROW(OrderSlipSectorsAtSteps(s, 0, 0.0, 0.30), std::invalid_argument);
 }
 
+TEST(SlipSectorsTest, SouthBeforeNorthAndTheHardwareOrderNeedAStrictlyLaterFrame) {
+  const auto order = [](const std::string& text) {
+    SectorOrder o;
+    o.order = text;
+    return o;
+  };
+  // The hardware's order, east and west in either order or together.
+  for (const char* text : {"E<W<S<N", "W<E<S<N", "E=W<S<N"}) {
+    EXPECT_TRUE(order(text).HardwareOrder()) << text;
+    EXPECT_TRUE(order(text).SouthBeforeNorth()) << text;
+  }
+  // South first, or a side after south, or ties across the steps: not the hardware's order.
+  for (const char* text : {"S<E<W<N", "E<S<W<N", "E<W=S<N", "E=W<S=N", "E<W<N<S", "E<W<S", "W<S<N"}) {
+    EXPECT_FALSE(order(text).HardwareOrder()) << text;
+  }
+  EXPECT_TRUE(order("S<E<W<N").SouthBeforeNorth());
+  EXPECT_TRUE(order("E<S").SouthBeforeNorth());  // north never slipped
+  EXPECT_FALSE(order("E<S=N").SouthBeforeNorth());
+  EXPECT_FALSE(order("N<S").SouthBeforeNorth());
+  EXPECT_FALSE(order("E<N").SouthBeforeNorth());  // south never slipped
+  EXPECT_FALSE(order("").SouthBeforeNorth());
+  // From a recording: east, west, south, north in successive frames.
+  SensorRecord s = CompassSensor(30);
+  SlipFrom(s, 1, 10);
+  SlipFrom(s, 2, 10);
+  SlipFrom(s, 3, 12);
+  SlipFrom(s, 4, 14);
+  const SectorOrder o = OrderSlipSectors(s, 0, 30);
+  EXPECT_EQ(o.order, "E=W<S<N");
+  EXPECT_TRUE(o.HardwareOrder());
+}
+
 TEST(SlipSectorsTest, ImageSectorIsTheDominantAxisWithVDownBeingSouth) {
   EXPECT_EQ(ImageSector(3, 1), 'E');
   EXPECT_EQ(ImageSector(-3, 1), 'W');
@@ -459,6 +491,16 @@ TEST(SignatureAcceptanceTest, AlarmNeedsSeventeenOfTwentyAndVisibilityNinetyPerc
   EXPECT_NE(FormatSignatureReport(runs, {}).find("tied with S/N 2 (by physics step in 1 of 20)"), std::string::npos);
   for (SignatureRun& r : runs) r.incipient->sectors.at_steps = true;
   EXPECT_NE(FormatSignatureReport(runs, {}).find("tied with S/N 2 (by physics step)"), std::string::npos);
+  // South before north and the whole order are counted beside the acceptance.
+  EXPECT_EQ(a.south_before_north, 0);
+  runs[4].incipient->sectors.order = "E<W<S<N";
+  runs[5].incipient->sectors.order = "S<E<W<N";
+  runs[6].incipient->sectors.order = "E<N<S<W";
+  a = JudgeSignatures(runs);
+  EXPECT_EQ(a.south_before_north, 2);
+  EXPECT_EQ(a.hardware_order, 1);
+  EXPECT_NE(FormatSignatureReport(runs, {}).find("S before N 2 of 20; E and W, then S, then N 1 of 20"),
+            std::string::npos);
 }
 
 TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
