@@ -83,6 +83,7 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& 
 
   // Gross-slip signal strength: peak mean pin speed (px/frame) just after the onset.
   m.peak_speed_px = std::isnan(m.gross_onset_s) ? kNaN : PeakMeanPinSpeedPx(r, sensor, m.gross_onset_s, kPeakWindowS);
+  m.sectors = OrderIncipientSectors(r, sensor, false);
   return m;
 }
 
@@ -112,6 +113,9 @@ IncipientSummary SummarizeIncipient(const std::vector<IncipientRunMetrics>& runs
     }
     if (m.alarm_before_gross) ++s.alarm_before_gross;
     peak.push_back(m.peak_speed_px);
+    s.east_west_first += m.sectors.EastWestFirst() ? 1 : 0;
+    s.south_before_north += m.sectors.SouthBeforeNorth() ? 1 : 0;
+    s.hardware_order += m.sectors.HardwareOrder() ? 1 : 0;
   }
   std::tie(s.lead_gross_mean_s, s.lead_gross_std_s) = MeanStd(lead_g);
   s.lead_fall_mean_s = MeanStd(lead_f).first;
@@ -129,25 +133,29 @@ std::string F(double v, const char* spec = "{:.3f}") { return std::isnan(v) ? "-
 }  // namespace
 
 std::string FormatIncipientReport(const std::vector<IncipientRunMetrics>& runs, const IncipientSummary& s) {
-  std::string out = fmt::format("{:>4} {:>9} {:>9} {:>9} {:>8} {:>8} {:>6} {:>7} {:>6} {:>7} {:>9} {:>8} {:>7}\n", "run",
-                                "incip_s", "gross_s", "fall_s", "lead_gs", "lead_fs", "pre", "r_first", "corr",
-                                "trk_err", "alarm_s", "alarm_ld", "peak");
+  std::string out =
+      fmt::format("{:>4} {:>9} {:>9} {:>9} {:>8} {:>8} {:>6} {:>7} {:>6} {:>7} {:>9} {:>8} {:>7} {:>9}\n", "run",
+                  "incip_s", "gross_s", "fall_s", "lead_gs", "lead_fs", "pre", "r_first", "corr", "trk_err", "alarm_s",
+                  "alarm_ld", "peak", "sectors");
   for (const auto& m : runs) {
-    out += fmt::format("{:>4} {:>9} {:>9} {:>9} {:>8} {:>8} {:>6} {:>7} {:>6} {:>7} {:>9} {:>8} {:>7}\n", m.run,
+    out += fmt::format("{:>4} {:>9} {:>9} {:>9} {:>8} {:>8} {:>6} {:>7} {:>6} {:>7} {:>9} {:>8} {:>7} {:>9}\n", m.run,
                        F(m.incipient_onset_s), F(m.gross_onset_s), F(m.fall_s), F(m.lead_gross_s), F(m.lead_fall_s),
                        F(m.pre_slip_fraction, "{:.2f}"), F(m.first_slip_radius_ratio, "{:.2f}"),
                        F(m.tracking_correlation, "{:.3f}"), F(m.tracking_error, "{:.3f}"), F(m.detector_alarm_s),
-                       F(m.detector_lead_fall_s), F(m.peak_speed_px, "{:.2f}"));
+                       F(m.detector_lead_fall_s), F(m.peak_speed_px, "{:.2f}"),
+                       m.sectors.order.empty() ? "-" : m.sectors.order);
   }
   out += fmt::format(
       "summary: {} runs; incipient onset in {}; lead before gross slip {} +- {} s (runs without an onset count 0); "
       "lead before the fall {} s, >= 0.5 s in {} runs; pins slipping before gross slip {}; first-slip radius "
       "ratio {}; internal/external tracking correlation {}, error {}; detector alarm before the fall in {}/{} runs "
-      "(mean lead {} s), before gross slip in {}/{}; peak mean pin speed {} px/frame\n",
+      "(mean lead {} s), before gross slip in {}/{}; peak mean pin speed {} px/frame; first slip east/west in {}/{} "
+      "runs, south before north in {}/{}, east and west then south then north in {}/{}\n",
       s.runs, s.with_incipient, F(s.lead_gross_mean_s), F(s.lead_gross_std_s), F(s.lead_fall_mean_s),
       s.lead_fall_over_half_s, F(s.pre_slip_fraction_mean, "{:.2f}"), F(s.first_slip_radius_ratio_mean, "{:.2f}"),
       F(s.tracking_correlation_mean), F(s.tracking_error_mean), s.detected_before_fall, s.runs,
-      F(s.detector_lead_fall_mean_s), s.alarm_before_gross, s.runs, F(s.peak_speed_mean_px, "{:.2f}"));
+      F(s.detector_lead_fall_mean_s), s.alarm_before_gross, s.runs, F(s.peak_speed_mean_px, "{:.2f}"),
+      s.east_west_first, s.runs, s.south_before_north, s.runs, s.hardware_order, s.runs);
   return out;
 }
 
@@ -155,14 +163,17 @@ std::string IncipientCsv(const std::vector<IncipientRunMetrics>& runs) {
   std::string out =
       "run,retract_start_s,incipient_onset_s,gross_onset_s,fall_s,lead_gross_s,lead_fall_s,pre_slip_fraction,"
       "first_slip_radius_ratio,tracking_correlation,tracking_error,detector_alarm_s,detector_lead_fall_s,"
-      "detected_before_fall,alarm_before_gross,peak_speed_px\n";
+      "detected_before_fall,alarm_before_gross,peak_speed_px,sector_order,east_west_first,south_before_north,"
+      "hardware_order\n";
   auto g = [](double v) { return std::isnan(v) ? std::string("nan") : fmt::format("{:.6g}", v); };
   for (const auto& m : runs) {
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", m.run, g(m.retract_start_s),
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", m.run, g(m.retract_start_s),
                        g(m.incipient_onset_s), g(m.gross_onset_s), g(m.fall_s), g(m.lead_gross_s), g(m.lead_fall_s),
                        g(m.pre_slip_fraction), g(m.first_slip_radius_ratio), g(m.tracking_correlation),
                        g(m.tracking_error), g(m.detector_alarm_s), g(m.detector_lead_fall_s),
-                       m.detected_before_fall ? 1 : 0, m.alarm_before_gross ? 1 : 0, g(m.peak_speed_px));
+                       m.detected_before_fall ? 1 : 0, m.alarm_before_gross ? 1 : 0, g(m.peak_speed_px),
+                       m.sectors.order.empty() ? "none" : m.sectors.order, m.sectors.EastWestFirst() ? 1 : 0,
+                       m.sectors.SouthBeforeNorth() ? 1 : 0, m.sectors.HardwareOrder() ? 1 : 0);
   }
   return out;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "detectors/incipient.h"
+#include "scenarios/signatures/slip_sectors.h"
 #include "sensors/dataset.h"
 
 namespace tactip {
@@ -34,6 +35,9 @@ struct IncipientRunMetrics {
   bool detected_before_fall = false;
   bool alarm_before_gross = false;  ///< the detector alarmed before ground-truth gross slip
   double peak_speed_px = 0.0;       ///< gross-slip signal: peak mean pin speed within 0.3 s of the onset, px/frame
+  /// Where the slip starts: the compass sectors in the order of their first slipping pin
+  /// over the incipient window (OrderIncipientSectors; physics steps where recorded).
+  SectorOrder sectors;
 };
 
 /// Analyses one run (needs the full record) as sensor `sensor` of it recorded it. The
@@ -57,6 +61,9 @@ struct IncipientSummary {
   int alarm_before_gross = 0;       ///< detector alarms before gross slip
   double detector_lead_fall_mean_s = 0.0;  ///< over runs detected before the fall
   double peak_speed_mean_px = 0.0;
+  /// Runs whose first slip is east/west only, with south before north, and with the
+  /// hardware's whole order (east and west, then south, then north).
+  int east_west_first = 0, south_before_north = 0, hardware_order = 0;
 };
 
 IncipientSummary SummarizeIncipient(const std::vector<IncipientRunMetrics>& runs);

@@ -82,17 +82,18 @@ std::string SweepDesignsCsv(const std::vector<SweepParam>& params, const std::ve
   out += ",n_pins,n_collidable,runs,runs_with_incipient";
   for (const auto& m : SweepMetrics()) out += "," + m.name;
   out += ",lead_fall_mean_s,alarm_before_gross,first_slip_radius_ratio,tracking_correlation,tracking_error,"
-         "shear_relaxation_s,sim_time_s,wall_time_s\n";
+         "shear_relaxation_s,east_west_first,south_before_north,hardware_order,sim_time_s,wall_time_s\n";
   for (size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
     out += std::to_string(i);
     for (const auto& kv : r.design) out += "," + kv.second;
     out += fmt::format(",{},{},{},{}", r.n_pins, r.n_collidable, r.summary.runs, r.summary.with_incipient);
     for (const auto& m : SweepMetrics()) out += "," + Num(m.value(r));
-    out += fmt::format(",{},{},{},{},{},{},{:.3f},{:.3f}\n", Num(r.summary.lead_fall_mean_s),
+    out += fmt::format(",{},{},{},{},{},{},{},{},{},{:.3f},{:.3f}\n", Num(r.summary.lead_fall_mean_s),
                        r.summary.alarm_before_gross, Num(r.summary.first_slip_radius_ratio_mean),
                        Num(r.summary.tracking_correlation_mean), Num(r.summary.tracking_error_mean),
-                       Num(r.shear_relaxation_s), r.sim_time_s, r.wall_time_s);
+                       Num(r.shear_relaxation_s), r.summary.east_west_first, r.summary.south_before_north,
+                       r.summary.hardware_order, r.sim_time_s, r.wall_time_s);
   }
   return out;
 }

@@ -138,10 +138,7 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   // Amplitudes of the slipping pins, where they slip, and the marker agreement.
   s.amplitude_w1_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, 1) : kNaN;
   s.amplitude_w5_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, kSmoothingFrames) : kNaN;
-  const bool at_steps = !sectors_by_frame && !sensor.pin_first_slip_s.empty();
-  s.sectors = at_steps ? OrderSlipSectorsAtSteps(sensor, retract, std::isnan(retract_s) ? run.time.front() : retract_s,
-                                                 std::isnan(end_s) ? std::numeric_limits<double>::infinity() : end_s)
-                       : OrderSlipSectors(sensor, retract, end);
+  s.sectors = OrderIncipientSectors(run, sensor, sectors_by_frame);
   s.tracking_correlation = TrackMarkers(run, sensor).correlation;
   return s;
 }

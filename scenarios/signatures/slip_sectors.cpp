@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "scenarios/run_signals.h"
+
 namespace tactip {
 
 namespace {
@@ -138,6 +140,17 @@ SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_fram
   SectorOrder out = OrderByFirst(first);
   out.at_steps = true;
   return out;
+}
+
+SectorOrder OrderIncipientSectors(const RunRecord& run, const SensorRecord& sensor, bool by_frame) {
+  const double retract_s = RunAttr(run, "retract_start_s"), gross_s = RunAttr(run, "gross_slip_onset_s");
+  const double end_s = std::isnan(gross_s) ? RunAttr(run, "object_fall_s") : gross_s;
+  const size_t retract = std::isnan(retract_s) ? 0 : FrameAt(run, retract_s);
+  if (by_frame || sensor.pin_first_slip_s.empty()) {
+    return OrderSlipSectors(sensor, retract, std::isnan(end_s) ? run.frames() : FrameAt(run, end_s));
+  }
+  return OrderSlipSectorsAtSteps(sensor, retract, std::isnan(retract_s) ? run.time.front() : retract_s,
+                                 std::isnan(end_s) ? std::numeric_limits<double>::infinity() : end_s);
 }
 
 }  // namespace tactip

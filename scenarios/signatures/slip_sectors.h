@@ -48,4 +48,10 @@ SectorOrder OrderSlipSectors(const SensorRecord& sensor, size_t from_frame, size
 /// sensor's pin_first_slip_s (std::invalid_argument without it).
 SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_frame, double from_s, double end_s);
 
+/// The sectors of `sensor`'s recording of `run` in its incipient window, from the
+/// retraction start (the first frame without one) to the gross-slip onset (the fall
+/// without one, the recording's end without either): at step resolution where the sensor
+/// has pin_first_slip_s and `by_frame` is false, else by frame.
+SectorOrder OrderIncipientSectors(const RunRecord& run, const SensorRecord& sensor, bool by_frame);
+
 }  // namespace tactip

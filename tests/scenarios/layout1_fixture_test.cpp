@@ -113,8 +113,12 @@ TEST_F(LayoutOneFixtureTest, CommandsThatReadPinsSeeTheSameFrames) {
     ASSERT_EQ(a.code, 0) << a.err;
     ASSERT_EQ(b.code, 0) << b.err;
     // The one difference in what they read: run 0's onset, dated back one step (see above).
-    EXPECT_EQ(Replaced(Slurp(P("old.csv")), ",3.252,", ",3.25,"), Slurp(P("now.csv")));
-    EXPECT_EQ(Replaced(a.out, "     3.252 ", "     3.250 "), b.out);
+    // With it the frame at 3.250 s, whose pins all slide, leaves the incipient window, so
+    // the report's sectors for run 0 (by frame, E=W=S=N, in the fixture) are none now.
+    const std::string old_csv = Replaced(Slurp(P("old.csv")), ",3.252,", ",3.25,");
+    EXPECT_EQ(report ? Replaced(old_csv, ",E=W=S=N,", ",none,") : old_csv, Slurp(P("now.csv")));
+    const std::string old_out = Replaced(a.out, "     3.252 ", "     3.250 ");
+    EXPECT_EQ(report ? Replaced(old_out, "   E=W=S=N\n", "         -\n") : old_out, b.out);
   }
   const CliResult info = Run("info " + kFixture);
   ASSERT_EQ(info.code, 0) << info.err;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/incipient_report.h"
 #include "scenarios/signatures/signature_report.h"
 
 namespace tactip {
@@ -353,6 +354,45 @@ TEST(IncipientSignatureTest, SectorsAreOrderedByPhysicsStepWhenTheRunRecordsFirs
   EXPECT_TRUE(MeasureSignatures(r, r.sensors[0], options).incipient->sectors.at_steps);
   options.sectors_by_frame = true;
   EXPECT_FALSE(MeasureSignatures(r, r.sensors[0], options).incipient->sectors.at_steps);
+}
+
+TEST(IncipientSignatureTest, IncipientReportAndSweepsOrderTheSectorsAsTheSignatureDoes) {
+  // The compass pins in a run: retraction at frame 40, east and west slip in frame 45, south
+  // in 47, north in 50, gross slip at 55.
+  RunRecord r = StillRun(60, 5, "fingerprint-v2");
+  r.sensors[0] = CompassSensor(60);
+  r.sensors[0].pos_m.assign(r.sensors[0].valid.size() * 3, 0.0f);  // the report reads pin radii from it
+  r.attrs["incipient_onset_s"] = 45 * kFrameS;
+  r.attrs["gross_slip_onset_s"] = 55 * kFrameS;
+  r.attrs["object_fall_s"] = 57 * kFrameS;
+  for (const auto& [pin, frame] : {std::pair{1, 45}, {2, 45}, {3, 47}, {4, 50}}) SlipFrom(r.sensors[0], pin, frame);
+  IncipientRunMetrics m = AnalyzeIncipientRun(r, r.sensors[0], {});
+  EXPECT_EQ(m.sectors.order, "E=W<S<N");
+  EXPECT_EQ(m.sectors.order, MeasureIncipientSignature(r, r.sensors[0])->sectors.order);
+  EXPECT_FALSE(m.sectors.at_steps);
+  // By physics step west comes first; so does it in the signature.
+  r.sensors[0].pin_first_slip_s = {kNaN, 44.6 * kFrameS, 44.2 * kFrameS, 46.5 * kFrameS, 49.5 * kFrameS};
+  m = AnalyzeIncipientRun(r, r.sensors[0], {});
+  EXPECT_TRUE(m.sectors.at_steps);
+  EXPECT_EQ(m.sectors.order, "W<E<S<N");
+  EXPECT_EQ(m.sectors.order, MeasureIncipientSignature(r, r.sensors[0])->sectors.order);
+  // The summary counts the runs; a run starting in the south counts only for south before north.
+  IncipientRunMetrics south = m;
+  south.sectors.order = "S<E=W<N";
+  south.sectors.first = "S";
+  const IncipientSummary sum = SummarizeIncipient({m, m, south});
+  EXPECT_EQ(sum.east_west_first, 2);
+  EXPECT_EQ(sum.south_before_north, 3);
+  EXPECT_EQ(sum.hardware_order, 2);
+  EXPECT_NE(FormatIncipientReport({m, m, south}, sum).find("first slip east/west in 2/3 runs, south before north in "
+                                                           "3/3, east and west then south then north in 2/3"),
+            std::string::npos);
+  // The CSV ends with the order and the three flags.
+  const std::string csv = IncipientCsv({m, south});
+  EXPECT_NE(csv.find(",peak_speed_px,sector_order,east_west_first,south_before_north,hardware_order\n"),
+            std::string::npos) << csv;
+  EXPECT_NE(csv.find(",W<E<S<N,1,1,1\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",S<E=W<N,0,1,0\n"), std::string::npos) << csv;
 }
 
 /// A still 20-pin v2 run with its incipient onset at frame 60 and the fall at frame 145,

@@ -62,6 +62,14 @@ TEST_F(SweepCliTest, GridGivesOneRowPerDesignPngHeatmapsAndReproducesExactly) {
   EXPECT_EQ(rows[2].rfind("1,0.5,4,61,", 0), 0u) << rows[2];
   EXPECT_EQ(rows[4].rfind("3,1,4,61,", 0), 0u) << rows[4];
   EXPECT_EQ(Lines(Slurp(dir_ / "a" / "runs.csv")).size(), 5u);
+  // Where the slip starts: run counts per design (before the timings), the order per run.
+  EXPECT_NE(rows[0].find(",shear_relaxation_s,east_west_first,south_before_north,hardware_order,sim_time_s,"
+                         "wall_time_s"),
+            std::string::npos)
+      << rows[0];
+  EXPECT_NE(Lines(Slurp(dir_ / "a" / "runs.csv"))[0].find(",sector_order,east_west_first,south_before_north,"
+                                                          "hardware_order"),
+            std::string::npos);
   for (const char* m : kMetrics) {
     const auto png = ReadPngInfo(dir_ / "a" / (std::string(m) + ".png"));
     EXPECT_GT(png.bytes, 5000u) << m << ": not a PNG or trivially small";

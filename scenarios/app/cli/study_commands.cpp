@@ -177,11 +177,11 @@ void PrintDesignProgress(int done, int total, const SweepDesignResult& r) {
   for (const auto& [k, v] : r.design) d += (d.empty() ? "" : " ") + k + "=" + v;
   std::fprintf(stderr,
                "[%d/%d] %s: %d pins, incipient in %d/%d runs, lead %s +- %s s, pre-slip %s, peak %s px/frame, "
-               "detector before fall %d/%d (%.1f s)\n",
+               "detector before fall %d/%d, first slip E/W %d/%d (%.1f s)\n",
                done, total, d.c_str(), r.n_pins, r.summary.with_incipient, r.summary.runs,
                Fmt(r.summary.lead_gross_mean_s).c_str(), Fmt(r.summary.lead_gross_std_s).c_str(),
                Fmt(r.summary.pre_slip_fraction_mean).c_str(), Fmt(r.summary.peak_speed_mean_px).c_str(),
-               r.summary.detected_before_fall, r.summary.runs, r.wall_time_s);
+               r.summary.detected_before_fall, r.summary.runs, r.summary.east_west_first, r.summary.runs, r.wall_time_s);
 }
 
 // tactip sweep: every design of the grid, CSVs and heatmaps in the output folder.
