@@ -45,7 +45,8 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& 
   m.lead_fall_s = m.fall_s - m.incipient_onset_s;
   m.pre_slip_fraction = RunAttr(r, "pre_slip_fraction");
   const size_t T = r.frames(), N = static_cast<size_t>(sensor.n_pins);
-  const size_t f0 = std::isnan(m.retract_start_s) ? 0 : FrameAt(r, m.retract_start_s);
+  const IncipientWindow window = IncipientWindowOf(r);
+  const size_t f0 = window.from_frame;
   auto radius = [&](size_t i) {  // distance of pin i's marker from the sensor axis, at frame 0
     return std::hypot(sensor.pos_m[i * 3 + 1], sensor.pos_m[i * 3 + 2]);
   };
@@ -83,7 +84,7 @@ IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& 
 
   // Gross-slip signal strength: peak mean pin speed (px/frame) just after the onset.
   m.peak_speed_px = std::isnan(m.gross_onset_s) ? kNaN : PeakMeanPinSpeedPx(r, sensor, m.gross_onset_s, kPeakWindowS);
-  m.sectors = OrderIncipientSectors(r, sensor, false);
+  m.sectors = OrderIncipientSectors(sensor, window, false);
   return m;
 }
 

@@ -16,6 +16,17 @@ size_t FrameAt(const RunRecord& run, double t_s) {
   return static_cast<size_t>(std::lower_bound(run.time.begin(), run.time.end(), t_s - 1e-9) - run.time.begin());
 }
 
+IncipientWindow IncipientWindowOf(const RunRecord& run) {
+  const double retract_s = RunAttr(run, "retract_start_s"), gross_s = RunAttr(run, "gross_slip_onset_s");
+  const double end_s = std::isnan(gross_s) ? RunAttr(run, "object_fall_s") : gross_s;
+  IncipientWindow w;
+  w.from_s = std::isnan(retract_s) ? (run.time.empty() ? 0.0 : run.time.front()) : retract_s;
+  w.end_s = std::isnan(end_s) ? std::numeric_limits<double>::infinity() : end_s;
+  w.from_frame = std::isnan(retract_s) ? 0 : FrameAt(run, retract_s);
+  w.end_frame = std::isnan(end_s) ? run.frames() : FrameAt(run, end_s);
+  return w;
+}
+
 std::optional<std::array<double, 2>> PinVelocityPx(const SensorRecord& sensor, size_t f, size_t pin) {
   const auto n = static_cast<size_t>(sensor.n_pins);
   if (f == 0 || !sensor.valid[f * n + pin] || !sensor.valid[(f - 1) * n + pin]) return std::nullopt;

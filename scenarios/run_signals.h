@@ -17,6 +17,16 @@ double RunAttr(const RunRecord& run, const char* key);
 /// Index of the first frame at or after time `t_s` (run.frames() if none).
 size_t FrameAt(const RunRecord& run, double t_s);
 
+/// A run's incipient window: from the retraction start to the gross-slip onset (the fall
+/// without one). The reports that read partial slip all use it.
+struct IncipientWindow {
+  double from_s = 0.0;     ///< retraction start (the first frame's time without one)
+  double end_s = 0.0;      ///< gross-slip onset, else the fall; +infinity without either
+  size_t from_frame = 0;   ///< first frame at or after the retraction start (0 without one)
+  size_t end_frame = 0;    ///< first frame at or after end_s (run.frames() without it)
+};
+IncipientWindow IncipientWindowOf(const RunRecord& run);
+
 /// Image velocity (du, dv) of pin `pin` from frame f-1 to frame f, px/frame; nullopt when f
 /// is 0 or the pin was missed (valid = 0) in either frame.
 std::optional<std::array<double, 2>> PinVelocityPx(const SensorRecord& sensor, size_t f, size_t pin);

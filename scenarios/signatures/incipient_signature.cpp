@@ -117,11 +117,9 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   if (!fingerprint || (std::isnan(onset_s) && std::isnan(fall_s))) return std::nullopt;
   const IncipientDetector check(params);  // throws InputError for bad parameters
   // The incipient window: retraction start to gross-slip onset (or fall, or the end).
-  const double retract_s = RunAttr(run, "retract_start_s"), gross_s = RunAttr(run, "gross_slip_onset_s");
-  const double end_s = std::isnan(gross_s) ? fall_s : gross_s;
-  const size_t retract = std::isnan(retract_s) ? 0 : FrameAt(run, retract_s);
+  const IncipientWindow window = IncipientWindowOf(run);
+  const size_t retract = window.from_frame, end = window.end_frame;
   const size_t first = std::max<size_t>(1, retract);  // the first frame with a velocity
-  const size_t end = std::isnan(end_s) ? run.frames() : FrameAt(run, end_s);
 
   IncipientSignature s;
   s.has_phase = !std::isnan(onset_s);
@@ -138,7 +136,7 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   // Amplitudes of the slipping pins, where they slip, and the marker agreement.
   s.amplitude_w1_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, 1) : kNaN;
   s.amplitude_w5_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, kSmoothingFrames) : kNaN;
-  s.sectors = OrderIncipientSectors(run, sensor, sectors_by_frame);
+  s.sectors = OrderIncipientSectors(sensor, window, sectors_by_frame);
   s.tracking_correlation = TrackMarkers(run, sensor).correlation;
   return s;
 }

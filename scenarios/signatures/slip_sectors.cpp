@@ -142,15 +142,9 @@ SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_fram
   return out;
 }
 
-SectorOrder OrderIncipientSectors(const RunRecord& run, const SensorRecord& sensor, bool by_frame) {
-  const double retract_s = RunAttr(run, "retract_start_s"), gross_s = RunAttr(run, "gross_slip_onset_s");
-  const double end_s = std::isnan(gross_s) ? RunAttr(run, "object_fall_s") : gross_s;
-  const size_t retract = std::isnan(retract_s) ? 0 : FrameAt(run, retract_s);
-  if (by_frame || sensor.pin_first_slip_s.empty()) {
-    return OrderSlipSectors(sensor, retract, std::isnan(end_s) ? run.frames() : FrameAt(run, end_s));
-  }
-  return OrderSlipSectorsAtSteps(sensor, retract, std::isnan(retract_s) ? run.time.front() : retract_s,
-                                 std::isnan(end_s) ? std::numeric_limits<double>::infinity() : end_s);
+SectorOrder OrderIncipientSectors(const SensorRecord& sensor, const IncipientWindow& window, bool by_frame) {
+  if (by_frame || sensor.pin_first_slip_s.empty()) return OrderSlipSectors(sensor, window.from_frame, window.end_frame);
+  return OrderSlipSectorsAtSteps(sensor, window.from_frame, window.from_s, window.end_s);
 }
 
 }  // namespace tactip

@@ -9,6 +9,8 @@
 
 namespace tactip {
 
+struct IncipientWindow;  // scenarios/run_signals.h
+
 /// Order of the sectors by their first ground-truth slipping pin.
 struct SectorOrder {
   /// The sectors whose first slip is the earliest, joined by '=' ("E", "E=W"); "" when no
@@ -48,10 +50,9 @@ SectorOrder OrderSlipSectors(const SensorRecord& sensor, size_t from_frame, size
 /// sensor's pin_first_slip_s (std::invalid_argument without it).
 SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_frame, double from_s, double end_s);
 
-/// The sectors of `sensor`'s recording of `run` in its incipient window, from the
-/// retraction start (the first frame without one) to the gross-slip onset (the fall
-/// without one, the recording's end without either): at step resolution where the sensor
-/// has pin_first_slip_s and `by_frame` is false, else by frame.
-SectorOrder OrderIncipientSectors(const RunRecord& run, const SensorRecord& sensor, bool by_frame);
+/// The sectors of `sensor`'s recording in a run's incipient window (IncipientWindowOf): at
+/// step resolution where the sensor has pin_first_slip_s and `by_frame` is false, else by
+/// frame.
+SectorOrder OrderIncipientSectors(const SensorRecord& sensor, const IncipientWindow& window, bool by_frame);
 
 }  // namespace tactip
