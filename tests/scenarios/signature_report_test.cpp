@@ -366,6 +366,15 @@ TEST(IncipientSignatureTest, IncipientReportAndSweepsOrderTheSectorsAsTheSignatu
   r.attrs["gross_slip_onset_s"] = 55 * kFrameS;
   r.attrs["object_fall_s"] = 57 * kFrameS;
   for (const auto& [pin, frame] : {std::pair{1, 45}, {2, 45}, {3, 47}, {4, 50}}) SlipFrom(r.sensors[0], pin, frame);
+  // A hand-built record without the true marker positions is refused, naming the array.
+  RunRecord no_markers = r;
+  no_markers.sensors[0].pos_m.clear();
+  try {
+    AnalyzeIncipientRun(no_markers, no_markers.sensors[0], {});
+    ADD_FAILURE() << "a record without pos_m was analysed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("pos_m holds 0 values, needs 900"), std::string::npos) << e.what();
+  }
   IncipientRunMetrics m = AnalyzeIncipientRun(r, r.sensors[0], {});
   EXPECT_EQ(m.sectors.order, "E=W<S<N");
   EXPECT_EQ(m.sectors.order, MeasureIncipientSignature(r, r.sensors[0])->sectors.order);
