@@ -14,6 +14,7 @@ namespace tactip {
 namespace {
 constexpr double kSkinDensity = 1100.0;  // kg/m^3, silicone rubber
 constexpr double kSkinPoisson = 0.5;     // rubber is nearly incompressible
+constexpr double kGelPoisson = 0.5;      // so is the silicone gel
 
 // Two springs in series.
 double Series(double k1, double k2) { return 1.0 / (1.0 / k1 + 1.0 / k2); }
@@ -248,6 +249,17 @@ PinLattice PinLattice::Build(const SkinConfig& skin) {
   return lat;
 }
 
+double RockingGelStiffness(const std::string& model, double E_gel, double h_gel, double b, double w) {
+  // Winkler: columns of depth h_gel under the base, k_theta = (E / h) b w^3 / 12.
+  if (model == "winkler") return (E_gel / h_gel) * b * w * w * w / 12.0;
+  // Half-space: a rigid strip of half-width c tilted by theta carries the pressure
+  // p(x) = E* theta x / (2 sqrt(c^2 - x^2)) (plane strain), whose moment per unit length
+  // is pi E* c^2 theta / 4 (the base is bonded, so the lifted half pulls); c = w / 2,
+  // E* = E / (1 - nu^2).
+  const double e_star = E_gel / (1.0 - kGelPoisson * kGelPoisson);
+  return std::numbers::pi * e_star * b * w * w / 16.0;
+}
+
 SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   SkinMechanics m;
   const double E_gel = skin.gel_modulus_kpa * 1e3;
@@ -265,11 +277,10 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
     m.cell_area_m2 = a * b;
     reach = skin.pattern_radius_mm * 1e-3;
     // Ridge rocking: a ridge of base width w = s / 2 (with its pin) tilts on the gel
-    // (Winkler foundation, k_theta = (E/h) b w^3 / 12) against the skin hinges in the
-    // valleys on both sides (plate bending, 2 D b / valley). At the contact point,
-    // k_rock = k_theta / lever^2.
+    // (RockingGelStiffness) against the skin hinges in the valleys on both sides (plate
+    // bending, 2 D b / valley). At the contact point, k_rock = k_theta / lever^2.
     const double w = 0.5 * a, valley = a - w;
-    const double k_theta = (E_gel / h_gel) * b * w * w * w / 12.0 + 2.0 * D * b / valley;
+    const double k_theta = RockingGelStiffness(skin.ridge_rocking, E_gel, h_gel, b, w) + 2.0 * D * b / valley;
     const double h = skin.ridge_height_mm * 1e-3;
     const double lever = skin.ridge_shape == "square" ? h : 0.5 * h;
     m.k_rock_N_m = k_theta / (lever * lever);

@@ -44,6 +44,7 @@ struct SkinConfig {
   double ridge_spacing_mm = 3.0;    ///< fingerprint: radial step between ridge rings (arc length)
   double ridge_height_mm = 2.0;     ///< fingerprint: ridge height above the skin (v2: peak-to-trough)
   std::string ridge_shape = "sine"; ///< fingerprint: square (raised rings) or sine (continuous wave)
+  std::string ridge_rocking = "winkler"; ///< fingerprint: the gel under a rocking ridge: winkler columns or a half-space
   int pins_per_ring = 6;            ///< fingerprint: ring k carries pins_per_ring * k pins
   double pattern_radius_mm = 20.0;  ///< fingerprint: arc radius of the outermost ring allowed
   std::string marker_model = "gel"; ///< what moves the markers: gel (pins plus the gel's lateral flow) or pins
@@ -171,6 +172,16 @@ struct SkinConfig {
       "Fingerprint: square ridges (v1) rock about their root, lever = ridge height; a sine wave (v2) rocks about "
       "its mid-height, lever = half the height.",
       Choices{"square", "sine"});
+    v("ridge_rocking", ridge_rocking, "",
+      "Fingerprint: what the gel under a ridge's base (width w = ridge_spacing_mm / 2, length b per pin) gives "
+      "against its rocking, besides the skin hinges in the valleys. winkler: the gel columns of depth gel_depth_mm, "
+      "k_theta = (E_gel / h_gel) b w^3 / 12. half-space: a rigid strip rocking on an incompressible elastic "
+      "half-space of the same Young's modulus, k_theta = pi E* b w^2 / 16, E* = E_gel / (1 - 0.5^2) (plane "
+      "strain). A base ten times narrower than the gel is deep loads only the gel near it, which columns of the full "
+      "depth make pi h_gel / w times too soft (31 on v1, 42 on v2): with the skin hinges, v1's ridges rock 12 "
+      "times stiffer (k_rock 9.3 -> 115 N/m), v2's twice (191 -> 371 N/m). Opt-in; README 'Ridge rocking' gives "
+      "the figures it moves.",
+      Choices{"winkler", "half-space"});
     v("pins_per_ring", pins_per_ring, "", "Fingerprint: ring k (k >= 1) carries pins_per_ring * k pins.",
       Bounds::Closed(1, 24));
     v("pattern_radius_mm", pattern_radius_mm, "mm",
@@ -325,6 +336,11 @@ struct PinLattice {
   static PinLattice Build(const SkinConfig& skin);
   size_t size() const { return pins.size(); }
 };
+
+/// The gel's resistance to a fingerprint ridge rocking on its base (skin.ridge_rocking: "winkler"
+/// or "half-space"), N m/rad: E_gel the gel's Young's modulus (Pa), h_gel its depth, b the
+/// base's length and w its width (m).
+double RockingGelStiffness(const std::string& model, double E_gel, double h_gel, double b, double w);
 
 /// Spring constants and masses derived from SkinConfig (SI units).
 struct SkinMechanics {

@@ -193,6 +193,36 @@ TEST(FingerprintMechanicsTest, RockingStiffnessFallsWithTheSquareOfTheLever) {
   EXPECT_NEAR(ms.k_rock_N_m / ml.k_rock_N_m, 4.0, 1e-12);
 }
 
+// skin.ridge_rocking = half-space: the gel's share of the ridge's rocking stiffness is a rigid
+// strip of width w tilted on an incompressible half-space, pi E* b w^2 / 16 with E* = 4 E / 3,
+// in place of the Winkler columns' (E / h) b w^3 / 12; the skin hinges stay. The two differ by
+// pi h / w. The figures the key's help quotes are these presets'.
+TEST(FingerprintMechanicsTest, HalfSpaceRockingIsATiltedStripOnTheGel) {
+  const std::map<std::string, double> quoted_k_rock = {{"fingerprint-v1", 115.0}, {"fingerprint-v2", 371.0}};
+  for (const auto& [name, quoted] : quoted_k_rock) {
+    SCOPED_TRACE(name);
+    const SkinConfig winkler = PresetSkin(name);
+    SkinConfig half_space = winkler;
+    half_space.ridge_rocking = "half-space";
+    ValidateConfig(half_space);
+    const SkinMechanics mw = SkinMechanics::From(winkler, 127), mh = SkinMechanics::From(half_space, 127);
+    const double a = winkler.ridge_spacing_mm * 1e-3, b = 2.0 * std::numbers::pi * a / winkler.pins_per_ring;
+    const double w = 0.5 * a, E = winkler.gel_modulus_kpa * 1e3, h = winkler.gel_depth_mm * 1e-3;
+    const double lever = (winkler.ridge_shape == "square" ? 1.0 : 0.5) * winkler.ridge_height_mm * 1e-3;
+    const double strip = std::numbers::pi * (4.0 / 3.0) * E * b * w * w / 16.0, columns = E / h * b * w * w * w / 12.0;
+    EXPECT_NEAR(strip / columns, std::numbers::pi * h / w, 1e-9 * strip / columns);
+    EXPECT_NEAR((mh.k_rock_N_m - mw.k_rock_N_m) * lever * lever, strip - columns, 1e-9 * strip);
+    EXPECT_NEAR(mh.k_rock_N_m, quoted, 1.0);
+    // The rest of the lattice follows from the stiffer ridge as before.
+    EXPECT_NEAR(mh.k_tip_N_m, 1.0 / (1.0 / mh.k_shear_N_m + 1.0 / mh.k_rock_N_m), 1e-9 * mh.k_tip_N_m);
+    EXPECT_NEAR(mh.k_couple_N_m, 1.0 / (1.0 / mh.k_link_N_m + 2.0 / mh.k_rock_N_m), 1e-9 * mh.k_couple_N_m);
+    EXPECT_EQ(mh.k_shear_N_m, mw.k_shear_N_m);
+  }
+  SkinConfig smooth = PresetSkin("smooth");
+  smooth.ridge_rocking = "half-space";
+  EXPECT_EQ(SkinMechanics::From(smooth, 127).k_rock_N_m, 0.0);
+}
+
 TEST(FingerprintMechanicsTest, TipAndCouplingAreSeriesCombinations) {
   for (const char* name : {"fingerprint-v1", "fingerprint-v2"}) {
     SCOPED_TRACE(name);

@@ -61,7 +61,7 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
        {"  marker_model: \"pins\"\n", "  gel_flow_depth_mm: 2.5\n", "  gel_squeeze_mm: 0.5\n",
         "  free_sliding_speed_mm_s: 0\n", "  sliding_timestep_s: 0\n", "  breakaway_ratio: 1\n", "  slip_memory_um: 0\n",
         "  shell_damping: \"viscous\"\n", "  gel_loss_tangent: 0.16\n", "  gel_shear_modulus_kpa: 0\n", "  rim: \"free\"\n",
-        "  membrane_links: \"isotropic\"\n", "  normal_spring: \"axial\"\n"}) {
+        "  membrane_links: \"isotropic\"\n", "  normal_spring: \"axial\"\n", "  ridge_rocking: \"winkler\"\n"}) {
     const size_t at = now_yaml.find(line);
     ASSERT_NE(at, std::string::npos) << line;
     now_yaml.erase(at, line.size());
