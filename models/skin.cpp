@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -256,6 +258,7 @@ double RockingGelStiffness(const std::string& model, double E_gel, double h_gel,
   // p(x) = E* theta x / (2 sqrt(c^2 - x^2)) (plane strain), whose moment per unit length
   // is pi E* c^2 theta / 4 (the base is bonded, so the lifted half pulls); c = w / 2,
   // E* = E / (1 - nu^2).
+  if (model != "half-space") throw std::invalid_argument("skin.ridge_rocking = '" + model + "': unknown model");
   const double e_star = E_gel / (1.0 - kGelPoisson * kGelPoisson);
   return std::numbers::pi * e_star * b * w * w / 16.0;
 }

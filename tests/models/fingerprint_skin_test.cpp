@@ -221,6 +221,7 @@ TEST(FingerprintMechanicsTest, HalfSpaceRockingIsATiltedStripOnTheGel) {
   SkinConfig smooth = PresetSkin("smooth");
   smooth.ridge_rocking = "half-space";
   EXPECT_EQ(SkinMechanics::From(smooth, 127).k_rock_N_m, 0.0);
+  EXPECT_THROW(RockingGelStiffness("halfspace", 1e5, 0.02, 1e-3, 1e-3), std::invalid_argument);
 }
 
 TEST(FingerprintMechanicsTest, TipAndCouplingAreSeriesCombinations) {
