@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
-#include <string>
 
 #include <fmt/format.h>
 
+#include "models/ridge_rocking.h"
 #include "models/rim_anchor.h"
 #include "sim/pressing_axis.h"
 
@@ -16,7 +15,6 @@ namespace tactip {
 namespace {
 constexpr double kSkinDensity = 1100.0;  // kg/m^3, silicone rubber
 constexpr double kSkinPoisson = 0.5;     // rubber is nearly incompressible
-constexpr double kGelPoisson = 0.5;      // so is the silicone gel
 
 // Two springs in series.
 double Series(double k1, double k2) { return 1.0 / (1.0 / k1 + 1.0 / k2); }
@@ -249,18 +247,6 @@ PinLattice PinLattice::Build(const SkinConfig& skin) {
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   lat.neighbours = std::move(edges);
   return lat;
-}
-
-double RockingGelStiffness(const std::string& model, double E_gel, double h_gel, double b, double w) {
-  // Winkler: columns of depth h_gel under the base, k_theta = (E / h) b w^3 / 12.
-  if (model == "winkler") return (E_gel / h_gel) * b * w * w * w / 12.0;
-  // Half-space: a rigid strip of half-width c tilted by theta carries the pressure
-  // p(x) = E* theta x / (2 sqrt(c^2 - x^2)) (plane strain), whose moment per unit length
-  // is pi E* c^2 theta / 4 (the base is bonded, so the lifted half pulls); c = w / 2,
-  // E* = E / (1 - nu^2).
-  if (model != "half-space") throw std::invalid_argument("skin.ridge_rocking = '" + model + "': unknown model");
-  const double e_star = E_gel / (1.0 - kGelPoisson * kGelPoisson);
-  return std::numbers::pi * e_star * b * w * w / 16.0;
 }
 
 SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {

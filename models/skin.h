@@ -177,7 +177,7 @@ struct SkinConfig {
       "against its rocking, besides the skin hinges in the valleys. winkler: the gel columns of depth gel_depth_mm, "
       "k_theta = (E_gel / h_gel) b w^3 / 12. half-space: a rigid strip rocking on an incompressible elastic "
       "half-space of the same Young's modulus, k_theta = pi E* b w^2 / 16, E* = E_gel / (1 - 0.5^2) (plane "
-      "strain). A base ten times narrower than the gel is deep loads only the gel near it, which columns of the full "
+      "strain). A base a tenth as wide as the gel is deep loads only the gel near it, which columns of the full "
       "depth make pi h_gel / w times too soft (31 on v1, 42 on v2): with the skin hinges, v1's ridges rock 12 "
       "times stiffer (k_rock 9.3 -> 115 N/m), v2's twice (191 -> 371 N/m). Opt-in; README 'Ridge rocking' gives "
       "the figures it moves.",
@@ -336,11 +336,6 @@ struct PinLattice {
   static PinLattice Build(const SkinConfig& skin);
   size_t size() const { return pins.size(); }
 };
-
-/// The gel's resistance to a fingerprint ridge rocking on its base (skin.ridge_rocking: "winkler"
-/// or "half-space"), N m/rad: E_gel the gel's Young's modulus (Pa), h_gel its depth, b the
-/// base's length and w its width (m).
-double RockingGelStiffness(const std::string& model, double E_gel, double h_gel, double b, double w);
 
 /// Spring constants and masses derived from SkinConfig (SI units).
 struct SkinMechanics {

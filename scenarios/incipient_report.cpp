@@ -18,7 +18,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPeakWindowS = 0.3;  // gross-slip signal: peak within this long after the onset
 
 // The per-pin arrays the analysis reads must hold `per_pin` values for each pin of each frame
-// (a record built by hand may lack some; a dataset read from a file always has them).
+// (a record built by hand may lack some; a dataset read from a file always has them). Only
+// these: SensorRecord::CheckShapes also wants the arrays the analysis does not read.
 void RequireArrays(const RunRecord& r, const SensorRecord& s) {
   const size_t tn = r.frames() * static_cast<size_t>(std::max(s.n_pins, 0));
   const auto require = [&](const char* name, size_t size, size_t per_pin) {

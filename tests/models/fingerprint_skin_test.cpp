@@ -15,11 +15,13 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "mujoco_warning_guard.h"
 #include "models/rail_rig.h"
+#include "models/ridge_rocking.h"
 #include "models/skin.h"
 #include "sim/sim_config.h"
 #include "sim/simulation.h"
@@ -193,35 +195,55 @@ TEST(FingerprintMechanicsTest, RockingStiffnessFallsWithTheSquareOfTheLever) {
   EXPECT_NEAR(ms.k_rock_N_m / ml.k_rock_N_m, 4.0, 1e-12);
 }
 
-// skin.ridge_rocking = half-space: the gel's share of the ridge's rocking stiffness is a rigid
-// strip of width w tilted on an incompressible half-space, pi E* b w^2 / 16 with E* = 4 E / 3,
-// in place of the Winkler columns' (E / h) b w^3 / 12; the skin hinges stay. The two differ by
-// pi h / w. The figures the key's help quotes are these presets'.
-TEST(FingerprintMechanicsTest, HalfSpaceRockingIsATiltedStripOnTheGel) {
-  const std::map<std::string, double> quoted_k_rock = {{"fingerprint-v1", 115.0}, {"fingerprint-v2", 371.0}};
-  for (const auto& [name, quoted] : quoted_k_rock) {
-    SCOPED_TRACE(name);
-    const SkinConfig winkler = PresetSkin(name);
-    SkinConfig half_space = winkler;
-    half_space.ridge_rocking = "half-space";
-    ValidateConfig(half_space);
-    const SkinMechanics mw = SkinMechanics::From(winkler, 127), mh = SkinMechanics::From(half_space, 127);
-    const double a = winkler.ridge_spacing_mm * 1e-3, b = 2.0 * std::numbers::pi * a / winkler.pins_per_ring;
-    const double w = 0.5 * a, E = winkler.gel_modulus_kpa * 1e3, h = winkler.gel_depth_mm * 1e-3;
-    const double lever = (winkler.ridge_shape == "square" ? 1.0 : 0.5) * winkler.ridge_height_mm * 1e-3;
-    const double strip = std::numbers::pi * (4.0 / 3.0) * E * b * w * w / 16.0, columns = E / h * b * w * w * w / 12.0;
-    EXPECT_NEAR(strip / columns, std::numbers::pi * h / w, 1e-9 * strip / columns);
-    EXPECT_NEAR((mh.k_rock_N_m - mw.k_rock_N_m) * lever * lever, strip - columns, 1e-9 * strip);
-    EXPECT_NEAR(mh.k_rock_N_m, quoted, 1.0);
-    // The rest of the lattice follows from the stiffer ridge as before.
-    EXPECT_NEAR(mh.k_tip_N_m, 1.0 / (1.0 / mh.k_shear_N_m + 1.0 / mh.k_rock_N_m), 1e-9 * mh.k_tip_N_m);
-    EXPECT_NEAR(mh.k_couple_N_m, 1.0 / (1.0 / mh.k_link_N_m + 2.0 / mh.k_rock_N_m), 1e-9 * mh.k_couple_N_m);
-    EXPECT_EQ(mh.k_shear_N_m, mw.k_shear_N_m);
+// skin.ridge_rocking = half-space: the gel's share of a ridge's rocking stiffness is a rigid
+// strip of half-width c = w / 2 tilted by theta on an incompressible half-space, whose pressure
+// p(x) = E* theta x / (2 sqrt(c^2 - x^2)), E* = 4 E / 3, has the moment pi E* c^2 theta / 4 per
+// unit length; here integrated numerically (x = c sin phi removes the edge singularities).
+TEST(FingerprintMechanicsTest, HalfSpaceRockingIsTheMomentOfATiltedStripsPressure) {
+  const double E = 1e5, b = 3e-3, w = 2e-3, c = 0.5 * w, theta = 1e-3, e_star = 4.0 / 3.0 * E;
+  // p(x) x dx = E* theta c^2 sin^2(phi) / 2 dphi over phi in (-pi/2, pi/2): midpoint rule.
+  const int n = 4000;
+  double moment = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double phi = -0.5 * std::numbers::pi + (k + 0.5) * std::numbers::pi / n;
+    moment += 0.5 * e_star * theta * c * c * std::sin(phi) * std::sin(phi) * std::numbers::pi / n;
+  }
+  EXPECT_NEAR(RockingGelStiffness("half-space", E, 0.02, b, w), b * moment / theta, 1e-9 * b * moment / theta);
+  // Winkler: each column (E / h) dx at x carries (E / h) theta x, moment (E / h) theta w^3 / 12.
+  double columns = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double x = -c + (k + 0.5) * w / n;
+    columns += E / 0.02 * x * x * w / n;
+  }
+  EXPECT_NEAR(RockingGelStiffness("winkler", E, 0.02, b, w), b * columns, 1e-6 * b * columns);
+  EXPECT_THROW(RockingGelStiffness("halfspace", E, 0.02, b, w), std::invalid_argument);
+}
+
+// The presets' ridges on either gel model: the figures the key's help and the README's table
+// (README 'Ridge rocking') quote, and the hinges, tip and coupling built on them as before.
+TEST(FingerprintMechanicsTest, HalfSpaceRockingStiffensThePresetsRidgesAsDocumented) {
+  struct Quoted {
+    double k_rock, k_tip, k_couple;
+  };
+  const std::map<std::pair<std::string, std::string>, Quoted> quoted = {
+      {{"fingerprint-v1", "winkler"}, {9.31, 3.49, 4.53}},
+      {{"fingerprint-v1", "half-space"}, {115.0, 5.33, 43.3}},
+      {{"fingerprint-v2", "winkler"}, {191.0, 3.09, 74.7}},
+      {{"fingerprint-v2", "half-space"}, {371.0, 3.12, 121.0}}};
+  for (const auto& [key, q] : quoted) {
+    SCOPED_TRACE(key.first + " " + key.second);
+    SkinConfig s = PresetSkin(key.first);
+    s.ridge_rocking = key.second;
+    ValidateConfig(s);
+    const SkinMechanics m = SkinMechanics::From(s, 127);
+    EXPECT_NEAR(m.k_rock_N_m, q.k_rock, 0.006 * q.k_rock);
+    EXPECT_NEAR(m.k_tip_N_m, q.k_tip, 0.006 * q.k_tip);
+    EXPECT_NEAR(m.k_couple_N_m, q.k_couple, 0.006 * q.k_couple);
+    EXPECT_NEAR(m.k_couple_N_m, 1.0 / (1.0 / m.k_link_N_m + 2.0 / m.k_rock_N_m), 1e-9 * m.k_couple_N_m);
   }
   SkinConfig smooth = PresetSkin("smooth");
   smooth.ridge_rocking = "half-space";
   EXPECT_EQ(SkinMechanics::From(smooth, 127).k_rock_N_m, 0.0);
-  EXPECT_THROW(RockingGelStiffness("halfspace", 1e5, 0.02, 1e-3, 1e-3), std::invalid_argument);
 }
 
 TEST(FingerprintMechanicsTest, TipAndCouplingAreSeriesCombinations) {
