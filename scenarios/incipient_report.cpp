@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -16,26 +15,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPeakWindowS = 0.3;  // gross-slip signal: peak within this long after the onset
-
-// The per-pin arrays the analysis reads must hold `per_pin` values for each pin of each frame
-// (a record built by hand may lack some; a dataset read from a file always has them). Only
-// these: SensorRecord::CheckShapes also wants the arrays the analysis does not read.
-void RequireArrays(const RunRecord& r, const SensorRecord& s) {
-  const size_t tn = r.frames() * static_cast<size_t>(std::max(s.n_pins, 0));
-  const auto require = [&](const char* name, size_t size, size_t per_pin) {
-    if (size != tn * per_pin) {
-      throw std::invalid_argument(fmt::format("incipient analysis of run {}, sensor '{}': {} holds {} values, needs {} "
-                                              "(T={}, N={}, {} per pin)",
-                                              r.index, s.name, name, size, tn * per_pin, r.frames(), s.n_pins, per_pin));
-    }
-  };
-  require("pos_m", s.pos_m.size(), 3);
-  require("pos_px", s.pos_px.size(), 2);
-  require("valid", s.valid.size(), 1);
-  require("pin_contact", s.pin_contact.size(), 1);
-  require("pin_slip", s.pin_slip.size(), 1);
-  if (!s.external_m.empty()) require("external_m", s.external_m.size(), 3);
-}
 
 // Mean and sample standard deviation of the finite values.
 std::pair<double, double> MeanStd(const std::vector<double>& v) {
@@ -56,7 +35,7 @@ std::pair<double, double> MeanStd(const std::vector<double>& v) {
 }  // namespace
 
 IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& r, const SensorRecord& sensor, const IncipientParams& params) {
-  RequireArrays(r, sensor);
+  sensor.CheckPinArrays(r.frames(), fmt::format("incipient analysis of run {}, sensor '{}': ", r.index, sensor.name));
   IncipientRunMetrics m;
   m.run = r.index;
   m.retract_start_s = RunAttr(r, "retract_start_s");

@@ -42,8 +42,8 @@ struct IncipientRunMetrics {
 
 /// Analyses one run (needs the full record) as sensor `sensor` of it recorded it. The
 /// detector is reset at the start of the retraction and fed every frame from then on.
-/// Throws std::invalid_argument if a per-pin array it reads (pos_m, pos_px, valid,
-/// pin_contact, pin_slip, external_m when present) does not hold a value per pin and frame.
+/// Throws std::invalid_argument if a per-pin array it reads does not hold a value per pin
+/// and frame (SensorRecord::CheckPinArrays).
 IncipientRunMetrics AnalyzeIncipientRun(const RunRecord& run, const SensorRecord& sensor,
                                         const IncipientParams& params);
 /// AnalyzeIncipientRun of the run's first sensor.

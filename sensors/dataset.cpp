@@ -9,11 +9,11 @@ namespace tactip {
 
 namespace {
 
-/// Throws std::logic_error(who + field ...) unless `actual` == `expected` values.
+/// Throws std::invalid_argument(who + field ...) unless `actual` == `expected` values.
 void CheckCount(const std::string& who, const char* field, size_t actual, size_t expected, const char* shape,
                 const std::string& dims) {
   if (actual != expected) {
-    throw std::logic_error(who + field + " has " + std::to_string(actual) + " values, expected " +
+    throw std::invalid_argument(who + field + " has " + std::to_string(actual) + " values, expected " +
                            std::to_string(expected) + " = " + shape + dims);
   }
 }
@@ -50,20 +50,12 @@ void SensorRecord::CheckShapes(size_t t, const std::string& run_who) const {
   const size_t n = static_cast<size_t>(n_pins);
   const std::string dims = " (T=" + std::to_string(t) + ", N=" + std::to_string(n) + ")";
   // Each field against the product of its shape.
-  CheckCount(who, "pos_px", pos_px.size(), t * n * 2, "T*N*2", dims);
-  CheckCount(who, "valid", valid.size(), t * n, "T*N", dims);
-  CheckCount(who, "pos_m", pos_m.size(), t * n * 3, "T*N*3", dims);
+  CheckPinArrays(t, who);
   CheckCount(who, "gross_slip", gross_slip.size(), t, "T", dims);
-  CheckCount(who, "pin_slip", pin_slip.size(), t * n, "T*N", dims);
-  CheckCount(who, "pin_contact", pin_contact.size(), t * n, "T*N", dims);
   CheckCount(who, "normal_N", normal_N.size(), t * n, "T*N", dims);
   CheckCount(who, "tangential_N", tangential_N.size(), t * n * 2, "T*N*2", dims);
   CheckCount(who, "incipient", incipient.size(), t, "T", dims);
   if (!pin_first_slip_s.empty()) CheckCount(who, "pin_first_slip_s", pin_first_slip_s.size(), n, "N", dims);
-  if (!external_px.empty() || !external_m.empty()) {
-    CheckCount(who, "external_px", external_px.size(), t * n * 2, "T*N*2", dims);
-    CheckCount(who, "external_m", external_m.size(), t * n * 3, "T*N*3", dims);
-  }
   if (!images.empty() || !detected_px.empty() || !detected_valid.empty()) {
     // The image pipeline's arrays come together.
     CheckCount(who, "images", images.size(), t, "T", dims);
@@ -73,6 +65,20 @@ void SensorRecord::CheckShapes(size_t t, const std::string& run_who) const {
       throw std::logic_error(who + "images of " + std::to_string(image_width) + " x " + std::to_string(image_height) +
                              " px (need >= 1 x 1)");
     }
+  }
+}
+
+void SensorRecord::CheckPinArrays(size_t t, const std::string& who) const {
+  const size_t n = static_cast<size_t>(std::max(n_pins, 0));
+  const std::string dims = " (T=" + std::to_string(t) + ", N=" + std::to_string(n) + ")";
+  CheckCount(who, "pos_px", pos_px.size(), t * n * 2, "T*N*2", dims);
+  CheckCount(who, "valid", valid.size(), t * n, "T*N", dims);
+  CheckCount(who, "pos_m", pos_m.size(), t * n * 3, "T*N*3", dims);
+  CheckCount(who, "pin_slip", pin_slip.size(), t * n, "T*N", dims);
+  CheckCount(who, "pin_contact", pin_contact.size(), t * n, "T*N", dims);
+  if (!external_px.empty() || !external_m.empty()) {
+    CheckCount(who, "external_px", external_px.size(), t * n * 2, "T*N*2", dims);
+    CheckCount(who, "external_m", external_m.size(), t * n * 3, "T*N*3", dims);
   }
 }
 

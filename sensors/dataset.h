@@ -67,6 +67,11 @@ struct SensorRecord {
   /// Throws std::logic_error if the name cannot name a group (empty, '/', "." or "..")
   /// or array sizes disagree with `frames` and N; `who` starts the message.
   void CheckShapes(size_t frames, const std::string& who) const;
+  /// The part of CheckShapes that analyses of the pins frame by frame rely on: throws
+  /// std::invalid_argument unless pos_px, valid, pos_m, pin_slip, pin_contact (and
+  /// external_px, external_m when either is present) hold a value per pin and frame; `who`
+  /// starts the message.
+  void CheckPinArrays(size_t frames, const std::string& who) const;
 };
 
 /// One thing a controller did, for the dataset's actions/ group.

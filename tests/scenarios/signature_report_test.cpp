@@ -373,7 +373,7 @@ TEST(IncipientSignatureTest, IncipientReportAndSweepsOrderTheSectorsAsTheSignatu
     AnalyzeIncipientRun(no_markers, no_markers.sensors[0], {});
     ADD_FAILURE() << "a record without pos_m was analysed";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("pos_m holds 0 values, needs 900"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("incipient analysis of run 0, sensor 'tactip': pos_m has 0 values, expected 900 = T*N*3"), std::string::npos) << e.what();
   }
   IncipientRunMetrics m = AnalyzeIncipientRun(r, r.sensors[0], {});
   EXPECT_EQ(m.sectors.order, "E=W<S<N");
