@@ -46,7 +46,7 @@ std::vector<std::string> WithResolvedMaterials(std::vector<std::string> keys) {
 std::vector<std::string> SkinPreset(const std::string& name) {
   if (name == "smooth") {
     // The lumped materials, also where a scenario's defaults carry a fingerprint preset's.
-    return {"skin.pattern=smooth", "skin.coupling=shell", "skin.gel_shear_modulus_kpa=0", "skin.skin_modulus_mpa=1",
+    return {"skin.pattern=smooth", "skin.coupling=shell", "skin.gel_shear_modulus_kpa=10", "skin.skin_modulus_mpa=1",
             "skin.rim=free"};
   }
   if (name == "fingerprint-v1") {

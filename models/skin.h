@@ -29,7 +29,7 @@ struct SkinConfig {
   double pin_mass_g = 0.2;          ///< moving mass per pin (pin plus its gel column)
   double gel_modulus_kpa = 100.0;   ///< Young's modulus of the gel filling
   double gel_depth_mm = 20.0;       ///< depth of the gel column under each pin
-  double gel_shear_modulus_kpa = 0.0; ///< shear modulus of the gel under the pins (0 = gel_modulus_kpa / 3)
+  double gel_shear_modulus_kpa = 10.0; ///< shear modulus of the gel under the pins (0 = gel_modulus_kpa / 3)
   double skin_modulus_mpa = 1.0;    ///< Young's modulus of the skin rubber
   double damping_ratio = 0.7;       ///< damping ratio of each pin's normal mode
   double shear_damping_ratio = 4.0; ///< damping ratio of the skin's in-plane (shear) mode
@@ -79,12 +79,14 @@ struct SkinConfig {
       Bounds::Closed(1.0, 100.0));
     v("gel_shear_modulus_kpa", gel_shear_modulus_kpa, "kPa",
       "Shear modulus G of the gel the skin slides on: each pin's shear column k_shear = G A_cell / h_gel (the "
-      "smooth skin's shell carries all pins' columns in parallel). 0: gel_modulus_kpa / 3, the column's own "
-      "modulus taken as an incompressible solid: the smooth skin's rigid shell, a lumped model whose gel columns "
-      "stand for all of its in-plane compliance. gel_modulus_kpa is a lumped normal stiffness fitted to force "
-      "against depth (it carries the skin's tension and the confined gel too); a silicone gel's own shear modulus "
-      "can be several times lower: the fingerprint presets, whose membrane lattice resolves the skin, set 6.67 "
-      "(README 'The skin's materials').",
+      "smooth skin's shell carries all pins' columns in parallel: 127 x 3.9 = 495 N/m at 10 kPa, ~2 mm of shear "
+      "per newton). gel_modulus_kpa is a lumped normal stiffness fitted to force against depth (it carries the "
+      "skin's tension and the confined gel too); a silicone gel's own shear modulus is several times lower. 10 "
+      "(the default, the smooth skin's shell): calibrated to the real TacTip's gross-slip spike (~20 frames of "
+      "above-noise pin motion from the onset), which the shell meets from about 12 kPa down (README 'The "
+      "smooth skin's shear'); the fingerprint presets, whose membrane lattice resolves the skin, set 6.67 "
+      "(README 'The skin's materials'). 0: gel_modulus_kpa / 3, the column's own modulus taken as an "
+      "incompressible solid (the smooth shell before the calibration, 1650 N/m).",
       Bounds::Closed(0.0, 10000.0));
     v("skin_modulus_mpa", skin_modulus_mpa, "MPa",
       "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation; the fingerprint presets "

@@ -139,7 +139,7 @@ TEST_F(SkinTest, MechanicsFollowMaterialFormulas) {
   const SkinMechanics m = SkinMechanics::From(cfg, 127);
   const double area = std::sqrt(3.0) / 2.0 * 9e-6;
   EXPECT_NEAR(m.k_normal_N_m, 100e3 * area / 0.02, 1e-9);
-  EXPECT_NEAR(m.k_shear_N_m, m.k_normal_N_m / 3.0, 1e-9);
+  EXPECT_NEAR(m.k_shear_N_m, 10e3 * area / 0.02, 1e-9);  // the gel's own shear modulus, 10 kPa
   EXPECT_NEAR(m.k_bend_N_m, 1e6 * 1e-9 / (12.0 * 0.75) / 9e-6, 1e-9);
   // Thickness enters the coupling as t^3 and the membrane stiffness as t.
   SkinConfig thick = cfg;
@@ -151,6 +151,8 @@ TEST_F(SkinTest, MechanicsFollowMaterialFormulas) {
 
 TEST_F(SkinTest, GelShearModulusSetsTheShearColumnsAloneAndZeroMeansAThirdOfTheGelModulus) {
   SkinConfig cfg;
+  EXPECT_DOUBLE_EQ(cfg.GelShearModulusPa(), 10e3);  // the default: the smooth shell's calibrated gel
+  cfg.gel_shear_modulus_kpa = 0.0;
   EXPECT_DOUBLE_EQ(cfg.GelShearModulusPa(), 100e3 / 3.0);  // 0: the column's own modulus, incompressible
   const SkinMechanics stiff = SkinMechanics::From(cfg, 127);
   cfg.gel_shear_modulus_kpa = 5.0;

@@ -23,9 +23,10 @@ using testing::Slurp;
 /// The fixture's job: two short runs of a 19-pin skin on acrylic with the external camera.
 /// The fixture predates the gel field (skin.marker_model): its markers are the pin bodies';
 /// the free sliding of fast contacts (sim.free_sliding_speed_mm_s) and the sliding step
-/// (sim.sliding_timestep_s).
+/// (sim.sliding_timestep_s) and the gel's own shear modulus (skin.gel_shear_modulus_kpa: the
+/// lumped shell's E_gel / 3 then).
 const char* kFixtureArgs =
-    "--set skin.marker_model=pins --set sim.free_sliding_speed_mm_s=0 --set sim.sliding_timestep_s=0 --runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
+    "--set skin.marker_model=pins --set skin.gel_shear_modulus_kpa=0 --set sim.free_sliding_speed_mm_s=0 --set sim.sliding_timestep_s=0 --runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
     "--set sensor.frame_rate_hz=20 --set rail.lift_mm=5 --set rail.hold_s=0.1 --set rail.settle_s=0.1 "
     "--set rail.retract_speed_mm_s=5 --set rail.post_fall_s=0.1 --jobs 1 --quiet";
 

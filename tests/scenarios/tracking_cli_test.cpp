@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include "cli_helpers.h"
@@ -13,15 +14,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Two short one-run datasets (20 mm lift, 5 mm/s retraction, 25 frames/s), with and without
-// images, generated once for the suite.
+// Two short one-run datasets (20 mm lift, 5 mm/s retraction, 50 frames/s), with and without
+// images, generated once for the suite. At 25 frames/s the shell's sag as the lift takes the
+// object's weight moves some pins 15 px between frames, past the tracker's 10 px gate.
 class TrackingCliTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = fs::temp_directory_path() / ("tactip_TrackingCliTest_" + std::to_string(::getpid()));
     fs::create_directories(dir_);
     const std::string shortened =
-        " --runs 1 --quiet --set rail.lift_mm=20 --set rail.retract_speed_mm_s=5 --set sensor.frame_rate_hz=25";
+        " --runs 1 --quiet --set rail.lift_mm=20 --set rail.retract_speed_mm_s=5 --set sensor.frame_rate_hz=50";
     ASSERT_EQ(Run("generate rail --images --out " + P("img.h5") + shortened).code, 0);
     ASSERT_EQ(Run("generate rail --out " + P("plain.h5") + shortened).code, 0);
   }
@@ -37,10 +39,18 @@ TEST_F(TrackingCliTest, TheReportPrintsEachRunAndTheSensorsTotalWithEveryPinWith
   const auto r = Run("report tracking " + P("img.h5"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("within_1px"), std::string::npos) << r.out;
-  // Run 0 and the total: no tip out of view, every sample within 1 px, no miss.
-  EXPECT_NE(r.out.find("tactip           0"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("tactip         all"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find(" 0     1.0000 "), std::string::npos) << r.out;
+  // Run 0 and the total: every sample within 1 px, no miss. Some tips leave the view (the
+  // outer ring's lowest pins touch the image's bottom edge while the shell carries the object).
+  for (const std::string row : {"tactip           0", "tactip         all"}) {
+    const size_t at = r.out.find(row);
+    ASSERT_NE(at, std::string::npos) << r.out;
+    std::istringstream line(r.out.substr(at, r.out.find('\n', at) - at));
+    std::string sensor, run, samples, out_of_view, within, rms, max, misses;
+    line >> sensor >> run >> samples >> out_of_view >> within >> rms >> max >> misses;
+    EXPECT_EQ(within, "1.0000") << row;
+    EXPECT_EQ(misses, "0") << row;
+    EXPECT_LT(std::stod(out_of_view), 0.02 * std::stod(samples)) << row;
+  }
 }
 
 TEST_F(TrackingCliTest, TheReportRefusesADatasetWithoutImages) {
