@@ -116,7 +116,7 @@ void RailRun::AddChannels(const RailScenarioConfig& cfg, const Draws& d) {
     channels_.push_back(Channel{
         TactileSensor(im_.sensor_specs[k], ids, DeriveSeed(base, 1), DeriveSeed(base, 2)),
         FrictionLaw(cfg.contact, cfg.labels, d.mu, ids.pin_geom, im_.stimulus_geom, DeriveSeed(base, 3), model_),
-        std::vector<std::uint8_t>(n_, 0), {}, std::vector<double>(n_, kNaN), std::nullopt});
+        std::vector<double>(n_, kNaN), {}, std::vector<double>(n_, kNaN), std::nullopt});
     // Rendered images only when asked for (their pixel noise on stream 4).
     if (cfg.images.enabled) channels_.back().imaging.emplace(cfg.images, cfg.sensor, DeriveSeed(base, 4));
     friction_switching_ = friction_switching_ || channels_.back().friction.switching();
@@ -355,7 +355,9 @@ void RailRun::TrackIncipient(double t) {
   for (Channel& ch : channels_) {
     const std::vector<std::uint8_t>& slip = ch.sensor.pin_slip();
     if (!retract_seen_) ch.contact_at_retract = ch.sensor.pin_contact();
-    for (int i = 0; i < n_; ++i) ch.slid_before_gross[i] |= ch.contact_at_retract[i] & slip[i];
+    for (int i = 0; i < n_; ++i) {
+      if (ch.contact_at_retract[i] && slip[i] && std::isnan(ch.first_slip_frame_s[i])) ch.first_slip_frame_s[i] = t;
+    }
   }
   retract_seen_ = true;
   const bool partial = n_slip_ > 0 && n_slip_ < n_contact_;
@@ -449,6 +451,12 @@ void RailRun::TrackHealth(double t) {
 RailRunSummary RailRun::Finish(RunRecord& rec) {
   if (!started_) InitRecord(rec);
   sum_.creep_um = creep_max_ * 1e6;
+  // The onset is dated back to the first step of its all-slide run; frames from that step on,
+  // read while the onset was being confirmed, are gross slip, not partial slip before it.
+  const auto before_gross = [&](double t) {
+    return !std::isnan(t) && (std::isnan(sum_.gross_slip_onset_s) || t < sum_.gross_slip_onset_s);
+  };
+  if (!before_gross(sum_.incipient_onset_s)) sum_.incipient_onset_s = kNaN;
   if (!std::isnan(sum_.incipient_onset_s) && !std::isnan(sum_.gross_slip_onset_s)) {
     sum_.incipient_lead_s = sum_.gross_slip_onset_s - sum_.incipient_onset_s;
   }
@@ -457,7 +465,7 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
     for (const Channel& ch : channels_) {
       for (int i = 0; i < n_; ++i) {
         n_c += ch.contact_at_retract[i];
-        n_s += ch.slid_before_gross[i];
+        n_s += before_gross(ch.first_slip_frame_s[i]) ? 1 : 0;
       }
     }
     if (n_c > 0) sum_.pre_slip_fraction = static_cast<double>(n_s) / n_c;

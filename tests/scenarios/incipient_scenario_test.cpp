@@ -154,6 +154,9 @@ TEST_F(IncipientScenarioTest, SmoothSkinSlipsAllAtOnceWithoutIncipientPhase) {
   const double retract = Attr(rec, "retract_start_s");
   ASSERT_TRUE(std::isfinite(gross)) << "the object never slipped";
   EXPECT_GT(gross, retract) << "slipped during the lift";
+  // No contacting pin slid before gross slip: the frames from the dated-back onset on, read
+  // while the onset was being confirmed (every pin sliding), are gross slip.
+  EXPECT_EQ(Attr(rec, "pre_slip_fraction"), 0.0);
   // No partial-slip frame between the start of the retraction and the gross onset (the
   // shell carries all pins together tangentially).
   const size_t f0 = FrameAt(rec, retract + 1e-5), f1 = FrameAt(rec, gross);
