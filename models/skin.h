@@ -98,7 +98,7 @@ struct SkinConfig {
       Bounds::Closed(0.0, 10.0));
     v("shear_damping_ratio", shear_damping_ratio, "",
       "Damping ratio of each pin's own shear mode in the lattices (coupling membrane or none), and of the shell "
-      "skin's in-plane mode under shell_damping = viscous (4 -> released shear relaxes over ~30 ms).",
+      "skin's in-plane mode under shell_damping = viscous (4 -> released shear relaxes with a ~58 ms time constant).",
       Bounds::Closed(0.0, 20.0));
     v("shell_damping", shell_damping, "",
       "How the shell skin's in-plane damper is set (coupling shell; the lattices damp each pin by "
