@@ -81,10 +81,10 @@ struct SkinConfig {
       "Shear modulus G of the gel the skin slides on: each pin's shear column k_shear = G A_cell / h_gel (the "
       "smooth skin's shell carries all pins' columns in parallel: 127 x 3.9 = 495 N/m at 10 kPa, ~2 mm of shear "
       "per newton). gel_modulus_kpa is a lumped normal stiffness fitted to force against depth (it carries the "
-      "skin's tension and the confined gel too); a silicone gel's own shear modulus is several times lower. 10 "
-      "(the default, the smooth skin's shell): calibrated to the real TacTip's gross-slip spike (~20 frames of "
-      "above-noise pin motion from the onset), which the shell meets from about 12 kPa down (README 'The "
-      "smooth skin's shear'); the fingerprint presets, whose membrane lattice resolves the skin, set 6.67 "
+      "skin's tension and the confined gel too); a silicone gel's own shear modulus is several times lower than "
+      "gel_modulus_kpa / 3. 10 (the default, the smooth skin's shell): calibrated to the real TacTip's gross-slip "
+      "spike (~20 frames of above-noise pin motion from the onset), which the shell meets at 11 kPa and below "
+      "and misses at 13 (README 'The smooth skin's shear'); the fingerprint presets, whose membrane lattice resolves the skin, set 6.67 "
       "(README 'The skin's materials'). 0: gel_modulus_kpa / 3, the column's own modulus taken as an "
       "incompressible solid (the smooth shell before the calibration, 1650 N/m).",
       Bounds::Closed(0.0, 10000.0));

@@ -452,11 +452,12 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   if (!started_) InitRecord(rec);
   sum_.creep_um = creep_max_ * 1e6;
   // The onset is dated back to the first step of its all-slide run; frames from that step on,
-  // read while the onset was being confirmed, are gross slip, not partial slip before it.
+  // read while the onset was being confirmed, are gross slip, not slip before it (a frame on
+  // the onset's own step too: every contacting pin slides there). Those frames hold no partial
+  // slip, so the incipient onset never falls among them.
   const auto before_gross = [&](double t) {
     return !std::isnan(t) && (std::isnan(sum_.gross_slip_onset_s) || t < sum_.gross_slip_onset_s);
   };
-  if (!before_gross(sum_.incipient_onset_s)) sum_.incipient_onset_s = kNaN;
   if (!std::isnan(sum_.incipient_onset_s) && !std::isnan(sum_.gross_slip_onset_s)) {
     sum_.incipient_lead_s = sum_.gross_slip_onset_s - sum_.incipient_onset_s;
   }

@@ -101,7 +101,8 @@ class RailRun {
   struct Channel {
     TactileSensor sensor;
     FrictionLaw friction;
-    std::vector<double> first_slip_frame_s;        // per pin: first frame labelled slipping, from the retraction
+    std::vector<double> first_slip_frame_s;        // per pin in contact at the retraction: its first frame
+                                                   // labelled slipping, from the retraction to the onset's confirmation
     std::vector<std::uint8_t> contact_at_retract;  // per pin: in contact when the retraction started
     std::vector<double> first_slip_s;              // per pin: first step labelled slipping, retraction to onset
     std::optional<SensorImagePipeline> imaging;    // rendered frames and blob tracking (images.enabled)

@@ -38,8 +38,10 @@ TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
   EXPECT_NEAR(c.samples.back().q_N, c.mu_P_N, kLoadTolerance * c.mu_P_N);
 }
 
-// Over a gel five times softer in shear the uncoupled pins need five times the travel to
-// slip; the ramp is sped up to fit its time limit and still follows the brush model.
+// Over the fingerprint presets' gel (6.67 kPa in shear: 1.5 times softer than the default
+// 10 kPa, five times softer than the lumped E_gel / 3) the uncoupled pins need that much more
+// travel to slip; the ramp is sped up to fit its (here shortened) time limit and still follows
+// the brush model.
 TEST(BrushModelTest, ASoftGelsLongerRampIsShearedFasterAndStillMatches) {
   BrushCheckOptions o;
   o.rig.skin.gel_shear_modulus_kpa = 6.67;
@@ -188,7 +190,7 @@ TEST(DomeCheckTest, ASkinSoftenedToAThirdOfTheChordPutsTheSoftGelsStickBoundaryI
 // Membrane coupling grows with skin thickness; a strongly coupled lattice releases each
 // ring before Cattaneo-Mindlin does, a weakly coupled one stays between CM and the brush.
 TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {
-  // On the lumped materials (the smooth skin's defaults), where a 0.3 mm skin couples over less
+  // On the lumped materials (gel shear E_gel / 3, a 1 MPa skin, no rim), where a 0.3 mm skin couples over less
   // than a third of the contact; over the preset's soft gel it couples further (validate contact
   // softens the skin instead: ASkinSoftenedToAThirdOfTheChord...).
   DomeCheckOptions o;

@@ -181,6 +181,23 @@ TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyBeforeGrossSlip) {
     const double pre = Attr(rec, "pre_slip_fraction");
     EXPECT_GT(pre, 0.0);
     EXPECT_LE(pre, 1.0);
+    // It is the recorded labels' count: of the pins in contact at the retraction's first frame,
+    // those labelled slipping in a frame before the (dated-back) gross onset.
+    const SensorRecord& sr = rec.sensors[0];
+    const size_t n_pins = static_cast<size_t>(sr.n_pins), f_retract = FrameAt(rec, retract + 1e-5);
+    int in_contact = 0, slid = 0;
+    for (size_t i = 0; i < n_pins; ++i) {
+      if (!sr.pin_contact[f_retract * n_pins + i]) continue;
+      ++in_contact;
+      for (size_t f = f_retract; f < rec.frames() && rec.time[f] < gross; ++f) {
+        if (sr.pin_slip[f * n_pins + i]) {
+          ++slid;
+          break;
+        }
+      }
+    }
+    ASSERT_GT(in_contact, 0);
+    EXPECT_NEAR(pre, static_cast<double>(slid) / in_contact, 1e-12);
     // The onset is the first partial-slip frame of the retraction (found from the frame
     // labels), and the lead runs from there to the gross onset.
     size_t f_on = FrameAt(rec, retract + 1e-5);

@@ -23,7 +23,7 @@ namespace {
 // A gel shell damped at `ratio` (loss tangent 2 x ratio), 1 ms throughout (its validated
 // sliding step); a viscous one at the same ratio. Both on the lumped shell (gel shear modulus
 // E_gel / 3, 1650 N/m), where the gel damper was characterised: on the default 10 kPa shell
-// (495 N/m, 5.6 Hz with 0.4 kg held) a 0.4 kg object held on the gel at a ratio of 0.1 still
+// (495 N/m, 5.4 Hz with 0.4 kg held) a 0.4 kg object held on the gel at a ratio of 0.1 still
 // rings, its fastest pin at 1.09 px/frame over the 0.5 s hold (README 'The pin-lattice skin').
 RailScenarioConfig Gel(double ratio) {
   RailScenarioConfig c;
