@@ -4,10 +4,9 @@
 #include "detectors/incipient.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <sstream>
 
+#include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
 #include "sim/base/number_text.h"
@@ -161,51 +160,12 @@ void IncipientDetector::Save(const std::string& path) const {
 }
 
 std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& path) {
-  const std::string text = ReadText(path);
-  const std::string where = "model '" + path + "': ";
-  std::istringstream in(text);
-  std::string line;
-  int line_no = 0;
-  bool have_header = false, have_window = false, have_speed = false, have_count = false;
   IncipientParams p;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!have_header) {
-      if (line != kHeader) {
-        throw InputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
-      }
-      have_header = true;
-      continue;
-    }
-    // "key value" lines; blank lines are ignored.
-    const std::string at = where + "line " + std::to_string(line_no) + ": ";
-    std::istringstream fields(line);
-    std::string key, value, extra;
-    if (!(fields >> key)) continue;
-    if (!(fields >> value) || (fields >> extra)) throw InputError(at + "expected 'key value'");
-    bool* seen = nullptr;
-    bool ok = false;
-    if (key == "window") {
-      seen = &have_window;
-      ok = ParseWhole(value, p.window);
-    } else if (key == "speed_thr_px") {
-      seen = &have_speed;
-      ok = ParseWhole(value, p.speed_thr_px);
-    } else if (key == "count_thr") {
-      seen = &have_count;
-      ok = ParseWhole(value, p.count_thr);
-    } else {
-      throw InputError(at + "unknown key '" + key + "'");
-    }
-    if (*seen) throw InputError(at + "duplicate " + key);
-    if (!ok) throw InputError(at + key + " '" + value + "' is not a number");
-    *seen = true;
-  }
-  if (!have_header) throw InputError(where + "empty file, expected '" + kHeader + "'");
-  if (!have_window) throw InputError(where + "missing window");
-  if (!have_speed) throw InputError(where + "missing speed_thr_px");
-  if (!have_count) throw InputError(where + "missing count_thr");
+  ReadKeyValueModel(ReadText(path), path, kHeader,
+                    {{"window", [&](const std::string& v) { return ParseWhole(v, p.window); }},
+                     {"speed_thr_px", [&](const std::string& v) { return ParseWhole(v, p.speed_thr_px); }},
+                     {"count_thr", [&](const std::string& v) { return ParseWhole(v, p.count_thr); }}});
+  const std::string where = "model '" + path + "': ";
   try {
     return std::make_unique<IncipientDetector>(p);
   } catch (const InputError& e) {

@@ -2,7 +2,9 @@
 
 #include "detectors/model_text.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <utility>
 
 #include "sim/base/number_text.h"
@@ -15,6 +17,47 @@ void AppendStandardizer(const Standardizer& s, std::string& out) {
   out += "\ninv_std";
   for (Eigen::Index j = 0; j < s.inv_std.size(); ++j) out += " " + RoundTripText(s.inv_std[j]);
   out += "\n";
+}
+
+namespace {
+
+// Parses one "key value" line of a parameter model into `keys`, marking it in `seen`.
+void ParseKeyValueLine(const std::string& line, const std::string& at, const std::vector<ModelKey>& keys,
+                       std::vector<bool>& seen) {
+  std::istringstream fields(line);
+  std::string key, value, extra;
+  if (!(fields >> key)) return;
+  if (!(fields >> value) || (fields >> extra)) throw InputError(at + "expected 'key value'");
+  const auto it = std::find_if(keys.begin(), keys.end(), [&](const ModelKey& k) { return k.name == key; });
+  if (it == keys.end()) throw InputError(at + "unknown key '" + key + "'");
+  const size_t index = static_cast<size_t>(it - keys.begin());
+  if (seen[index]) throw InputError(at + "duplicate " + key);
+  if (!it->parse(value)) throw InputError(at + key + " '" + value + "' is not a number");
+  seen[index] = true;
+}
+
+}  // namespace
+
+void ReadKeyValueModel(const std::string& text, const std::string& path, std::string_view header,
+                       const std::vector<ModelKey>& keys) {
+  const std::string where = "model '" + path + "': ";
+  std::istringstream in(text);
+  std::string line;
+  int line_no = 0;
+  std::vector<bool> seen(keys.size(), false);
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_no == 1) {
+      if (line != header) throw InputError(where + "line 1 is '" + line + "', expected '" + std::string(header) + "'");
+      continue;
+    }
+    ParseKeyValueLine(line, where + "line " + std::to_string(line_no) + ": ", keys, seen);
+  }
+  if (line_no == 0) throw InputError(where + "empty file, expected '" + std::string(header) + "'");
+  for (size_t k = 0; k < keys.size(); ++k) {
+    if (!seen[k]) throw InputError(where + "missing " + std::string(keys[k].name));
+  }
 }
 
 ModelTextReader::ModelTextReader(std::string text, std::string path, int line_offset)

@@ -1,8 +1,10 @@
 #pragma once
-// Reading and writing the text model files of the trained detectors (SVM, logistic
-// regression): line-by-line reading with errors naming the file and line, and the
-// standardiser's lines.
+// Reading and writing the text model files of the detectors: line-by-line reading with
+// errors naming the file and line, the standardiser's lines of the trained classifiers (SVM,
+// logistic regression), and the "key value" files of the parameter detectors (threshold,
+// incipient).
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +16,21 @@ namespace tactip {
 
 /// Appends "mean v1 v2 ...\ninv_std v1 v2 ...\n" (round-trip exact) to `out`.
 void AppendStandardizer(const Standardizer& s, std::string& out);
+
+/// One key of a "key value" model file and how to parse its value: `parse` stores the value
+/// and returns false when it is not a number of the key's type.
+struct ModelKey {
+  std::string_view name;
+  std::function<bool(const std::string&)> parse;
+};
+
+/// Reads a parameter detector's model file: the line `header`, then "key value" lines (blank
+/// lines ignored, a trailing CR dropped), every key of `keys` exactly once, in any order.
+/// Throws InputError("model 'PATH': ...") naming the line for a wrong header, a line that is
+/// not "key value", an unknown or duplicate key or a value `parse` rejects ("KEY 'V' is not a
+/// number"); at the end for an empty file or a missing key (the first of `keys` missing).
+void ReadKeyValueModel(const std::string& text, const std::string& path, std::string_view header,
+                       const std::vector<ModelKey>& keys);
 
 /// Reads the "key values..." lines of a detector model file, one at a time, and turns every
 /// problem into InputError("model 'PATH': line L: <problem>").

@@ -4,12 +4,11 @@
 #include "detectors/threshold.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <random>
-#include <sstream>
 #include <utility>
 
+#include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
 #include "sim/base/number_text.h"
@@ -48,42 +47,10 @@ void ThresholdDetector::Save(const std::string& path) const {
 }
 
 std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& path) {
-  const std::string text = ReadText(path);
-  const std::string where = "model '" + path + "': ";
-  std::istringstream in(text);
-  std::string line;
-  int line_no = 0;
-  bool have_header = false, have_t = false;
   double t = 0.0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!have_header) {
-      if (line != kHeader) {
-        throw InputError(where + "line 1 is '" + line + "', expected '" + kHeader + "'");
-      }
-      have_header = true;
-      continue;
-    }
-    // "key value" lines; blank lines are ignored.
-    std::istringstream fields(line);
-    std::string key, value, extra;
-    if (!(fields >> key)) continue;
-    if (!(fields >> value) || (fields >> extra)) {
-      throw InputError(where + "line " + std::to_string(line_no) + ": expected 'key value'");
-    }
-    if (key != "threshold_px") {
-      throw InputError(where + "line " + std::to_string(line_no) + ": unknown key '" + key + "'");
-    }
-    if (have_t) throw InputError(where + "line " + std::to_string(line_no) + ": duplicate threshold_px");
-    if (!ParseWhole(value, t)) {
-      throw InputError(where + "line " + std::to_string(line_no) + ": threshold_px '" + value +
-                       "' is not a number");
-    }
-    have_t = true;
-  }
-  if (!have_header) throw InputError(where + "empty file, expected '" + kHeader + "'");
-  if (!have_t) throw InputError(where + "missing threshold_px");
+  ReadKeyValueModel(ReadText(path), path, kHeader,
+                    {{"threshold_px", [&](const std::string& v) { return ParseWhole(v, t); }}});
+  const std::string where = "model '" + path + "': ";
   try {
     return std::make_unique<ThresholdDetector>(t);
   } catch (const InputError& e) {
