@@ -5,7 +5,6 @@
 // (shared_runs.h) and simulated in parallel.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +28,7 @@
 #include "input_error.h"
 #include "run_records.h"
 #include "shared_runs.h"
+#include "temp_dir.h"
 
 namespace tactip {
 namespace {
@@ -472,18 +472,8 @@ TEST_F(IncipientScenarioTest, V2MarkersTrackTheContactPointsBetterThanV1) {
 
 class IncipientDatasetTest : public testing::MujocoWarningGuard {
  protected:
-  void SetUp() override {
-    MujocoWarningGuard::SetUp();
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("tactip_incipient_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    fs::remove_all(dir_);
-    MujocoWarningGuard::TearDown();
-  }
-  fs::path dir_;
+  tactip::testing::TestTempDir temp_{"incipient_test"};
+  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttributes) {

@@ -2,7 +2,6 @@
 // writes lean.csv, and refuses an unknown scene in one line before anything runs.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "mujoco_warning_guard.h"
 #include "scenarios/lean.h"
 #include "scenarios/rail.h"
+#include "temp_dir.h"
 
 namespace tactip {
 namespace {
@@ -81,12 +81,8 @@ TEST_F(LeanSceneTest, AnUnknownSceneIsRefused) {
 
 class LeanCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_lean_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  tactip::testing::TestTempDir temp_{"lean_test"};
+  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(LeanCliTest, PrintsTheTableAndWritesOneCsvRowPerVariant) {

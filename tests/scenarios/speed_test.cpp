@@ -3,7 +3,6 @@
 // (or names an unknown scene).
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include "mujoco_warning_guard.h"
 #include "scenarios/rail.h"
 #include "scenarios/speed.h"
+#include "temp_dir.h"
 
 namespace tactip {
 namespace {
@@ -84,12 +84,8 @@ TEST_F(SpeedStudyTest, BareReplayRunsTheSameStepsOnTheSameModel) {
 
 class SpeedCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_speed_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  tactip::testing::TestTempDir temp_{"speed_test"};
+  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(SpeedCliTest, PrintsTheTableAndWritesOneCsvRowPerScene) {

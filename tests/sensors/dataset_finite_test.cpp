@@ -3,7 +3,6 @@
 // frame and the pin, and nothing of it reaches a file.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,6 +12,7 @@
 
 #include "input_error.h"
 #include "sensors/dataset.h"
+#include "temp_dir.h"
 
 namespace tactip {
 namespace {
@@ -21,17 +21,11 @@ namespace fs = std::filesystem;
 
 class DatasetFiniteTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_dataset_finite_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  tactip::testing::TestTempDir temp_{"dataset_finite"};
+  const fs::path dir_ = temp_.path();
+  std::string Path(const std::string& name) const { return temp_.File(name); }
   bool Empty() const { return fs::directory_iterator(dir_) == fs::directory_iterator(); }
 
-  fs::path dir_;
 };
 
 DatasetHeader Header() {

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "input_error.h"
 #include "run_records.h"
 #include "sensors/dataset.h"
+#include "temp_dir.h"
 
 namespace tactip {
 namespace {
@@ -23,16 +23,10 @@ namespace fs = std::filesystem;
 /// Fresh empty folder per test, removed afterwards.
 class DatasetLayoutsTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("tactip_layouts_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  tactip::testing::TestTempDir temp_{"layouts_test"};
+  const fs::path dir_ = temp_.path();
+  std::string Path(const std::string& name) const { return temp_.File(name); }
 
-  fs::path dir_;
 };
 
 /// Writes string attribute `name` = `value` on `obj`, as the layout-1 writer did.

@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -13,6 +12,7 @@
 
 #include "input_error.h"
 #include "sensors/dataset.h"
+#include "temp_dir.h"
 
 namespace tactip {
 namespace {
@@ -74,14 +74,9 @@ TEST(ShardTest, ParseAcceptsIOfNAndNamesTheRuleItBreaks) {
 /// Fresh folder per test, removed afterwards.
 class DatasetShardTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_shard_test_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  tactip::testing::TestTempDir temp_{"shard_test"};
+  const fs::path dir_ = temp_.path();
+  std::string Path(const std::string& name) const { return temp_.File(name); }
 
   /// A one-run dataset with `shard` (if any) in its header.
   void Write(const std::string& path, std::optional<ShardSpec> shard) const {
@@ -106,7 +101,6 @@ class DatasetShardTest : public ::testing::Test {
     w.Commit();
   }
 
-  fs::path dir_;
 };
 
 TEST_F(DatasetShardTest, ShardAttributesRoundTripAndPlainFilesHaveNone) {

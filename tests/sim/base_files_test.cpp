@@ -13,6 +13,7 @@
 
 #include "dead_pid.h"
 #include "sim/base/errors.h"
+#include "temp_dir.h"
 
 namespace tactip {
 namespace {
@@ -21,17 +22,11 @@ namespace fs = std::filesystem;
 
 class FilesTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tactip_files_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string P(const std::string& name) const { return (dir_ / name).string(); }
+  tactip::testing::TestTempDir temp_{"files"};
+  const fs::path dir_ = temp_.path();
+  std::string P(const std::string& name) const { return temp_.File(name); }
   void Touch(const std::string& name) const { std::ofstream(P(name)) << "x"; }
 
-  fs::path dir_;
 };
 
 using testing::DeadPid;
