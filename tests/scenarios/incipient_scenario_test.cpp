@@ -473,7 +473,6 @@ TEST_F(IncipientScenarioTest, V2MarkersTrackTheContactPointsBetterThanV1) {
 class IncipientDatasetTest : public testing::MujocoWarningGuard {
  protected:
   tactip::testing::TestTempDir temp_{"incipient_test"};
-  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttributes) {
@@ -489,7 +488,7 @@ TEST_F(IncipientDatasetTest, RoundTripKeepsIncipientLabelsExternalMarkersAndAttr
   no_external.index = 1;
   no_external.sensors[0].external_px.clear();
   no_external.sensors[0].external_m.clear();
-  const std::string path = (dir_ / "incipient.h5").string();
+  const std::string path = temp_.File("incipient.h5");
   {
     DatasetHeader h;
     h.tactip_version = "test";

@@ -82,17 +82,16 @@ TEST_F(LeanSceneTest, AnUnknownSceneIsRefused) {
 class LeanCliTest : public ::testing::Test {
  protected:
   tactip::testing::TestTempDir temp_{"lean_test"};
-  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(LeanCliTest, PrintsTheTableAndWritesOneCsvRowPerVariant) {
   const CliResult r = RunTactip("bench --lean --scene \"rail curved20\" --set rail.retract_speed_mm_s=2 --set "
-                                "rail.lift_mm=10 --out " + (dir_ / "lean").string(),
-                                dir_);
+                                "rail.lift_mm=10 --out " + temp_.File("lean"),
+                                temp_.path());
   ASSERT_EQ(r.code, 0) << r.err;
   for (const auto& v : LeanVariants()) EXPECT_NE(r.out.find(v.name), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("bench --lean: rail curved20, lean"), std::string::npos) << r.err;
-  std::istringstream csv(Slurp(dir_ / "lean" / "lean.csv"));
+  std::istringstream csv(Slurp(temp_.path() / "lean" / "lean.csv"));
   std::string header, row;
   ASSERT_TRUE(std::getline(csv, header));
   EXPECT_EQ(header.rfind("scene,variant,rail_protocol,nv,ngeom", 0), 0u) << header;
@@ -105,15 +104,15 @@ TEST_F(LeanCliTest, PrintsTheTableAndWritesOneCsvRowPerVariant) {
 }
 
 TEST_F(LeanCliTest, AnUnknownSceneIsOneLineAndNothingRuns) {
-  const CliResult r = RunTactip("bench --lean --scene \"rail bumpy\" --out " + (dir_ / "lean").string(), dir_);
+  const CliResult r = RunTactip("bench --lean --scene \"rail bumpy\" --out " + temp_.File("lean"), temp_.path());
   EXPECT_NE(r.code, 0);
   EXPECT_EQ(r.err.rfind("tactip: unknown speed scene 'rail bumpy'", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(dir_ / "lean" / "lean.csv"));
+  EXPECT_FALSE(fs::exists(temp_.path() / "lean" / "lean.csv"));
 }
 
 TEST_F(LeanCliTest, LeanAndSpeedAreSeparateStudies) {
-  const CliResult r = RunTactip("bench --lean --speed", dir_);
+  const CliResult r = RunTactip("bench --lean --speed", temp_.path());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--speed"), std::string::npos) << r.err;
 }

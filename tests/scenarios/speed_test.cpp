@@ -85,17 +85,16 @@ TEST_F(SpeedStudyTest, BareReplayRunsTheSameStepsOnTheSameModel) {
 class SpeedCliTest : public ::testing::Test {
  protected:
   tactip::testing::TestTempDir temp_{"speed_test"};
-  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(SpeedCliTest, PrintsTheTableAndWritesOneCsvRowPerScene) {
   const CliResult r = RunTactip("bench --speed --scene \"rail curved20\" --set rail.retract_speed_mm_s=2 --set "
-                                "rail.lift_mm=10 --out " + (dir_ / "speed").string(),
-                                dir_);
+                                "rail.lift_mm=10 --out " + temp_.File("speed"),
+                                temp_.path());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("rail curved20"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("cost split"), std::string::npos) << r.out;
-  std::istringstream csv(Slurp(dir_ / "speed" / "speed.csv"));
+  std::istringstream csv(Slurp(temp_.path() / "speed" / "speed.csv"));
   std::string header, row, extra;
   ASSERT_TRUE(std::getline(csv, header));
   ASSERT_TRUE(std::getline(csv, row));
@@ -114,11 +113,11 @@ TEST_F(SpeedCliTest, PrintsTheTableAndWritesOneCsvRowPerScene) {
 }
 
 TEST_F(SpeedCliTest, AnUnknownSceneIsNamedAndNothingRuns) {
-  const CliResult r = RunTactip("bench --speed --scene \"rail bumpy\" --out " + (dir_ / "speed").string(), dir_);
+  const CliResult r = RunTactip("bench --speed --scene \"rail bumpy\" --out " + temp_.File("speed"), temp_.path());
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("unknown speed scene 'rail bumpy'"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("bench --speed: one run"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(dir_ / "speed" / "speed.csv"));
+  EXPECT_FALSE(fs::exists(temp_.path() / "speed" / "speed.csv"));
 }
 
 }  // namespace

@@ -22,10 +22,8 @@ namespace fs = std::filesystem;
 class DatasetFiniteTest : public ::testing::Test {
  protected:
   tactip::testing::TestTempDir temp_{"dataset_finite"};
-  const fs::path dir_ = temp_.path();
   std::string Path(const std::string& name) const { return temp_.File(name); }
-  bool Empty() const { return fs::directory_iterator(dir_) == fs::directory_iterator(); }
-
+  bool Empty() const { return fs::directory_iterator(temp_.path()) == fs::directory_iterator(); }
 };
 
 DatasetHeader Header() {

@@ -24,7 +24,6 @@ namespace fs = std::filesystem;
 class DatasetLayoutsTest : public ::testing::Test {
  protected:
   tactip::testing::TestTempDir temp_{"layouts_test"};
-  const fs::path dir_ = temp_.path();
   std::string Path(const std::string& name) const { return temp_.File(name); }
 
 };

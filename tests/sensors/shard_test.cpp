@@ -75,7 +75,6 @@ TEST(ShardTest, ParseAcceptsIOfNAndNamesTheRuleItBreaks) {
 class DatasetShardTest : public ::testing::Test {
  protected:
   tactip::testing::TestTempDir temp_{"shard_test"};
-  const fs::path dir_ = temp_.path();
   std::string Path(const std::string& name) const { return temp_.File(name); }
 
   /// A one-run dataset with `shard` (if any) in its header.

@@ -23,7 +23,6 @@ namespace fs = std::filesystem;
 class FilesTest : public ::testing::Test {
  protected:
   tactip::testing::TestTempDir temp_{"files"};
-  const fs::path dir_ = temp_.path();
   std::string P(const std::string& name) const { return temp_.File(name); }
   void Touch(const std::string& name) const { std::ofstream(P(name)) << "x"; }
 
@@ -43,7 +42,7 @@ TEST_F(FilesTest, SameFileSeesThroughLinksAndDotDot) {
   EXPECT_TRUE(SameFile(P("sub/../a.h5"), P("a.h5")));
   EXPECT_FALSE(SameFile(P("a.h5"), P("b.h5")));
   // Not yet written: compared by the path with links and '..' resolved.
-  fs::create_symlink(dir_ / "sub", P("link"));
+  fs::create_symlink(temp_.path() / "sub", P("link"));
   EXPECT_TRUE(SameFile(P("sub/../new.h5"), P("new.h5")));
   EXPECT_TRUE(SameFile(P("link/new.h5"), P("sub/new.h5")));
   EXPECT_FALSE(SameFile(P("new.h5"), P("sub/new.h5")));
@@ -85,7 +84,7 @@ TEST_F(FilesTest, WritingAPathRemovesItsStaleTempFilesAndSaysSoOnOneLine) {
 TEST_F(FilesTest, WritableLocationNeedsAFolderThatTakesNewFiles) {
   EXPECT_NO_THROW(CheckWritableLocation(P("ok.h5")));
   EXPECT_FALSE(fs::exists(P("ok.h5")));
-  EXPECT_TRUE(fs::is_empty(dir_)) << "the probe file is removed";
+  EXPECT_TRUE(fs::is_empty(temp_.path())) << "the probe file is removed";
   auto message = [](const std::string& path) {
     try {
       CheckWritableLocation(path);
@@ -97,7 +96,7 @@ TEST_F(FilesTest, WritableLocationNeedsAFolderThatTakesNewFiles) {
   EXPECT_NE(message(P("missing/x.h5")).find("folder '" + P("missing") + "' does not exist"), std::string::npos);
   Touch("file");
   EXPECT_NE(message(P("file/x.h5")).find("'" + P("file") + "' is not a folder"), std::string::npos);
-  EXPECT_NE(message(dir_.string()).find("it is a folder"), std::string::npos);
+  EXPECT_NE(message(temp_.path().string()).find("it is a folder"), std::string::npos);
   // /proc exists but takes no new files (whoever asks): the system's reason is given.
   const std::string proc = message("/proc/x.h5");
   EXPECT_EQ(proc.rfind("cannot write '/proc/x.h5': cannot create a file in folder '/proc' (", 0), 0u) << proc;
