@@ -122,11 +122,6 @@ void CheckDomeSkin(const SkinConfig& skin) {
   if (skin.coupling != "membrane") {
     throw InputError("dome check: skin.coupling = '" + skin.coupling + "': needs the membrane-coupled lattice");
   }
-  if (skin.membrane_links != "isotropic") {
-    throw InputError("dome check: skin.membrane_links = '" + skin.membrane_links +
-                     "': the lattice's exact quasi-static solution couples both in-plane components of a link "
-                     "(isotropic links)");
-  }
   if (skin.normal_spring != "axial") {
     throw InputError("dome check: skin.normal_spring = '" + skin.normal_spring +
                      "': the lattice's exact quasi-static solution rests each gel spring at its pin's height (axial)");
@@ -134,14 +129,6 @@ void CheckDomeSkin(const SkinConfig& skin) {
 }
 
 namespace {
-
-// Each pin's own shear stiffness (the clamped rim's outer ring carries its share).
-std::vector<double> TipStiffnesses(const PinLattice& lattice, const SkinMechanics& mech) {
-  std::vector<double> k;
-  k.reserve(lattice.pins.size());
-  for (const auto& pin : lattice.pins) k.push_back(mech.TipStiffness(pin.ring));
-  return k;
-}
 
 // What the dome check needs from the press: each pin's normal load and contact, its
 // distance from the axis in the plate plane, and the contact radius.
@@ -330,15 +317,18 @@ void CompareRingReleases(const QuasiStaticShear& qs, const DomePress& press, con
 
 }  // namespace
 
-// Coupling length: with edges of every direction, sum_e k (l_e . grad u)^2 averages to
-// (1/2) sum_e k l_e^2 |grad u|^2 over the lattice's area, against sum_i k_tip u^2.
+// Coupling length of the sheared (y) component: with edges of every direction,
+// sum_e k_yy (l_e . grad u)^2 averages to (1/2) sum_e k_yy l_e^2 |grad u|^2 over the
+// lattice's area, against sum_i k_tip u^2. k_yy is k_couple on isotropic links and k e_y^2
+// on central ones (the transverse coupling they add is left out).
 double CouplingLengthMm(const PinLattice& lattice, const SkinMechanics& mech, double r_out_m) {
+  const LatticeShearStiffness stiffness = LatticeShearStiffness::Of(lattice, mech);
   double edge_sum = 0.0;
-  for (const auto& e : lattice.neighbours) {
-    const auto& p = lattice.pins[e[0]].normal;
-    const auto& q = lattice.pins[e[1]].normal;
+  for (const auto& link : stiffness.links) {
+    const auto& p = lattice.pins[link.a].normal;
+    const auto& q = lattice.pins[link.b].normal;
     const double l = r_out_m * std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
-    edge_sum += mech.k_couple_N_m * l * l;
+    edge_sum += link.k_yy * l * l;
   }
   return 1e3 * std::sqrt(edge_sum / (2.0 * static_cast<double>(lattice.pins.size()) * mech.k_tip_N_m));
 }
@@ -392,6 +382,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   DomeCheck out;
   const DomePress press = ReadDomePress(rig, spec, out);
   out.coupling_length_mm = CouplingLengthMm(lattice, mech, spec.skin.OuterRadiusMm() * 1e-3);
+  out.central_links = mech.central_links;
   const double travel_mm = 1e3 * out.mu_P_N / (out.pins_in_contact * mech.k_tip_N_m);
   out.shear_speed_mm_s = std::max(opts.shear_speed_mm_s, travel_mm / opts.max_ramp_s);
   const std::vector<double> first_slip_q = ShearDome(rig, opts, mech, press, out);
@@ -401,7 +392,7 @@ DomeCheck RunDomeCheck(const DomeCheckOptions& opts) {
   // differ from it is the dynamics' and the soft contact's doing; where both miss the band
   // it is the lattice's mechanics.
   const QuasiStaticShear qs =
-      SolveQuasiStaticShear(lattice, TipStiffnesses(lattice, mech), mech.k_couple_N_m, press.normal_N, press.contact,
+      SolveQuasiStaticShear(LatticeShearStiffness::Of(lattice, mech), press.normal_N, press.contact,
                             spec.contact.friction, 4000,
                             spec.sim.noslip == "exact" ? spec.contact.presliding_mm * 1e-3 : 0.0);
   JudgeExact(qs, press, band, out);
@@ -426,7 +417,7 @@ bool DomeCriteria::ReleaseOk(const DomeCheck& c) const {
 }
 bool DomeCriteria::BandOk(const DomeCheck& c) const { return c.bracket_fraction >= band_required; }
 bool DomeCriteria::Pass(const DomeCheck& c) const {
-  return GrossOk(c) && OutsideInOk(c) && ReleaseOk(c) && (!judge_band || BandOk(c));
+  return GrossOk(c) && OutsideInOk(c) && (!JudgesRelease(c) || ReleaseOk(c)) && (!judge_band || BandOk(c));
 }
 
 std::string FormatDomeCheck(const DomeCheck& c, const DomeCriteria& k) {
@@ -462,11 +453,15 @@ std::string FormatDomeCheck(const DomeCheck& c, const DomeCriteria& k) {
                      "in {:.1f} % (ties half; required >= {:.0f} %): {}; Spearman(-radius, load at first slip) {:.3f}\n",
                      c.outside_in_pairs, 100.0 * c.outside_in_order, 100.0 * k.outside_in,
                      verdict(k.OutsideInOk(c)), c.outside_in_correlation);
-  out += fmt::format("  every pin slips at the exact quasi-static load: mean |error| {:.4f}, max {:.4f} Q/muP over {} of "
-                     "{} pins (allowed {:.2f}): {}\n",
-                     c.release_error_mean, c.release_error_max, c.release_pins_compared, c.pins_in_contact,
-                     k.release_error,
-                     verdict(k.ReleaseOk(c)));
+  const std::string release = fmt::format(
+      "  every pin slips at the exact quasi-static load: mean |error| {:.4f}, max {:.4f} Q/muP over {} of {} pins",
+      c.release_error_mean, c.release_error_max, c.release_pins_compared, c.pins_in_contact);
+  if (DomeCriteria::JudgesRelease(c)) {
+    out += fmt::format("{} (allowed {:.2f}): {}\n", release, k.release_error, verdict(k.ReleaseOk(c)));
+  } else {
+    out += release + " (reported; on central links the exact solution holds each slipped pin's friction direction "
+                     "at its release, the simulated one turns with its slip)\n";
+  }
   const std::string band = fmt::format(
       "  stick boundary (outermost sticking .. innermost slipping pin) reaches the band between Cattaneo-Mindlin and "
       "brush in {:.1f} % of {} samples with 0.1 <= Q/muP <= 0.9 (exact solution: {:.1f} %)",

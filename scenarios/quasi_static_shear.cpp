@@ -1,6 +1,7 @@
 #include "scenarios/quasi_static_shear.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -13,71 +14,205 @@ namespace tactip {
 
 namespace {
 
-// One segment of the quasi-static solution between two releases: with the stuck set S
-// fixed, every force is affine in the plate displacement delta. Returns the segment
-// (Q = q0 + q1 delta) and the next pin to release (or -1) at displacement `*release_at`.
-// Rigid stick (presliding 0): stuck pins move with the plate. Otherwise each stuck pin is
-// tied to the plate by its pre-sliding spring mu N_i / presliding, as in the friction pass.
+using Vec2 = std::array<double, 2>;
+constexpr Vec2 kPlateAxis = {1.0, 0.0};  // the plate moves along y
+
+// The lattice's 2n x 2n stiffness (DOF 2i: pin i along y, 2i + 1: along z).
+Eigen::MatrixXd StiffnessMatrix(const LatticeShearStiffness& s) {
+  const int n = static_cast<int>(s.k_tip_N_m.size());
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  for (int i = 0; i < n; ++i) K(2 * i, 2 * i) = K(2 * i + 1, 2 * i + 1) = s.k_tip_N_m[i];
+  for (const auto& l : s.links) {
+    const double block[2][2] = {{l.k_yy, l.k_yz}, {l.k_yz, l.k_zz}};
+    for (int r = 0; r < 2; ++r) {
+      for (int c = 0; c < 2; ++c) {
+        K(2 * l.a + r, 2 * l.a + c) += block[r][c];
+        K(2 * l.b + r, 2 * l.b + c) += block[r][c];
+        K(2 * l.a + r, 2 * l.b + c) -= block[r][c];
+        K(2 * l.b + r, 2 * l.a + c) -= block[r][c];
+      }
+    }
+  }
+  return K;
+}
+
+// The pins' states between two releases; a slipped pin's friction is mu N_i along dir.
+struct ShearState {
+  std::vector<std::uint8_t> stuck, slipped;
+  std::vector<Vec2> dir;
+};
+
+// One segment of the quasi-static solution between two releases: with the stuck set fixed,
+// every force is affine in the plate displacement delta. Q = q0 + q1 delta (along y).
 struct Segment {
   double delta0, q0, q1;
 };
 
-Segment SolveSegment(const Eigen::MatrixXd& K, const std::vector<double>& normal_N, double mu, double presliding_m,
-                     const std::vector<std::uint8_t>& stuck, const std::vector<std::uint8_t>& slipped, double delta,
-                     int* release, double* release_at) {
-  const int n = static_cast<int>(K.rows());
-  // Unknown pins U (all pins, or the unstuck ones under rigid stick): K_UU u = b + delta k.
-  std::vector<int> U;
-  for (int i = 0; i < n; ++i) {
-    if (presliding_m > 0.0 || !stuck[i]) U.push_back(i);
+// The next release of a segment: the pin, the plate displacement and its force's direction.
+struct Release {
+  int pin = -1;
+  double at = std::numeric_limits<double>::infinity();
+  Vec2 dir = kPlateAxis;
+};
+
+// Where a stuck pin's friction force f0 + delta f1 leaves the disc |f| <= limit (the larger
+// root of |f0 + delta f1|^2 = limit^2; infinity when the force does not grow).
+double LeavesCone(const Vec2& f0, const Vec2& f1, double limit) {
+  const double a = f1[0] * f1[0] + f1[1] * f1[1];
+  if (!(a > 0.0)) return std::numeric_limits<double>::infinity();
+  const double b = f0[0] * f1[0] + f0[1] * f1[1];
+  const double c = f0[0] * f0[0] + f0[1] * f0[1] - limit * limit;
+  const double disc = b * b - a * c;
+  if (disc < 0.0) return std::numeric_limits<double>::infinity();
+  const double d = (-b + std::sqrt(disc)) / a;
+  // A force that only shrinks from here (the root behind it, its y share falling) never releases.
+  return f1[0] > 0.0 || std::abs(f1[1]) > 0.0 ? d : std::numeric_limits<double>::infinity();
+}
+
+// The lattice's displacements u = u0 + delta u1 with the stuck set fixed. Rigid stick
+// (presliding 0): stuck pins move with the plate, the others are solved; otherwise every
+// pin is solved, each stuck pin tied to the plate by its pre-sliding spring.
+struct Displacements {
+  Eigen::VectorXd u0, u1;
+};
+
+Displacements Solve(const Eigen::MatrixXd& K, const std::vector<double>& springs, const std::vector<double>& friction_N,
+                    const ShearState& s, bool rigid) {
+  const int dofs = static_cast<int>(K.rows());
+  std::vector<int> U;  // unknown DOFs
+  for (int d = 0; d < dofs; ++d) {
+    if (!rigid || !s.stuck[d / 2]) U.push_back(d);
   }
-  const auto spring = [&](int i) { return stuck[i] && presliding_m > 0.0 ? mu * normal_N[i] / presliding_m : 0.0; };
-  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(U.size())), x1 = x0;
-  if (!U.empty()) {
-    Eigen::MatrixXd Kuu(U.size(), U.size());
-    Eigen::VectorXd b(U.size()), k(U.size());
-    for (size_t a = 0; a < U.size(); ++a) {
-      b(a) = slipped[U[a]] ? mu * normal_N[U[a]] : 0.0;
-      k(a) = spring(U[a]);
-      for (int j = 0; j < n; ++j) {
-        if (presliding_m <= 0.0 && stuck[j]) k(a) -= K(U[a], j);
-      }
-      for (size_t c = 0; c < U.size(); ++c) Kuu(a, c) = K(U[a], U[c]);
-      Kuu(a, a) += spring(U[a]);
-    }
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(Kuu);
-    x0 = ldlt.solve(b);
-    x1 = ldlt.solve(k);
+  Displacements out{Eigen::VectorXd::Zero(dofs), Eigen::VectorXd::Zero(dofs)};
+  for (int d = 0; d < dofs; d += 2) {
+    if (rigid && s.stuck[d / 2]) out.u1(d) = 1.0;
   }
-  std::vector<double> u0(n, 0.0), u1(n, 0.0);  // u_i = u0 + delta u1
-  for (size_t a = 0; a < U.size(); ++a) u0[U[a]] = x0(a), u1[U[a]] = x1(a);
-  for (int i = 0; i < n; ++i) {
-    if (presliding_m <= 0.0 && stuck[i]) u1[i] = 1.0;
+  if (U.empty()) return out;
+  const auto m = static_cast<Eigen::Index>(U.size());
+  Eigen::MatrixXd Kuu(m, m);
+  Eigen::VectorXd b(m), k(m);
+  for (Eigen::Index a = 0; a < m; ++a) {
+    const int d = U[a], pin = d / 2, c = d % 2;
+    b(a) = s.slipped[pin] ? friction_N[pin] * s.dir[pin][c] : 0.0;
+    k(a) = springs[pin] * kPlateAxis[c] - K.row(d).dot(out.u1);
+    for (Eigen::Index e = 0; e < m; ++e) Kuu(a, e) = K(d, U[e]);
+    Kuu(a, a) += springs[pin];
   }
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(Kuu);
+  const Eigen::VectorXd x0 = ldlt.solve(b), x1 = ldlt.solve(k);
+  for (Eigen::Index a = 0; a < m; ++a) out.u0(U[a]) = x0(a), out.u1(U[a]) = x1(a);
+  return out;
+}
+
+Segment SolveSegment(const Eigen::MatrixXd& K, const std::vector<double>& friction_N, double presliding_m,
+                     const ShearState& s, double delta, Release* next) {
+  const int n = static_cast<int>(friction_N.size());
+  const bool rigid = !(presliding_m > 0.0);
+  std::vector<double> springs(n, 0.0);
+  for (int i = 0; i < n; ++i) springs[i] = s.stuck[i] && !rigid ? friction_N[i] / presliding_m : 0.0;
+  const Displacements u = Solve(K, springs, friction_N, s, rigid);
   // Each stuck pin's friction f = f0 + delta f1: its spring, or (rigid) the lattice's pull.
   Segment seg{delta, 0.0, 0.0};
-  *release = -1;
-  *release_at = std::numeric_limits<double>::infinity();
+  *next = Release{};
   for (int i = 0; i < n; ++i) {
-    if (slipped[i]) seg.q0 += mu * normal_N[i];
-    if (!stuck[i]) continue;
-    double f0 = 0.0, f1 = 0.0;
-    if (presliding_m > 0.0) {
-      f0 = -spring(i) * u0[i];
-      f1 = spring(i) * (1.0 - u1[i]);
-    } else {
-      for (int j = 0; j < n; ++j) f0 += K(i, j) * u0[j], f1 += K(i, j) * u1[j];
+    if (s.slipped[i]) seg.q0 += friction_N[i] * s.dir[i][0];
+    if (!s.stuck[i]) continue;
+    Vec2 f0{}, f1{};
+    for (int c = 0; c < 2; ++c) {
+      const int d = 2 * i + c;
+      f0[c] = rigid ? K.row(d).dot(u.u0) : -springs[i] * u.u0(d);
+      f1[c] = rigid ? K.row(d).dot(u.u1) : springs[i] * (kPlateAxis[c] - u.u1(d));
     }
-    seg.q0 += f0;
-    seg.q1 += f1;
-    if (f1 <= 0.0) continue;
-    const double d = (mu * normal_N[i] - f0) / f1;
-    if (d < *release_at) *release_at = d, *release = i;
+    seg.q0 += f0[0];
+    seg.q1 += f1[0];
+    const double at = LeavesCone(f0, f1, friction_N[i]);
+    if (at < next->at) {
+      const Vec2 f = {f0[0] + at * f1[0], f0[1] + at * f1[1]};
+      const double norm = std::hypot(f[0], f[1]);
+      *next = Release{i, at, norm > 0.0 ? Vec2{f[0] / norm, f[1] / norm} : kPlateAxis};
+    }
   }
   return seg;
 }
 
+// Q / (mu P) on a uniform grid of plate displacement up to gross slip. Q is continuous at a
+// release, so either segment gives it there.
+void FillGrid(const std::vector<Segment>& segments, double gross_delta, double mu_P, int grid_points,
+              QuasiStaticShear& out) {
+  if (grid_points <= 1) return;
+  size_t k = 0;
+  for (int g = 0; g < grid_points; ++g) {
+    const double d = gross_delta * g / (grid_points - 1);
+    while (k + 1 < segments.size() && d >= segments[k + 1].delta0) ++k;
+    out.grid_delta_m.push_back(d);
+    out.grid_q.push_back((segments[k].q0 + segments[k].q1 * d) / mu_P);
+  }
+}
+
 }  // namespace
+
+LatticeShearStiffness LatticeShearStiffness::Isotropic(const PinLattice& lattice, const std::vector<double>& k_tip_N_m,
+                                                       double k_couple_N_m) {
+  LatticeShearStiffness s;
+  s.k_tip_N_m = k_tip_N_m;
+  for (const auto& e : lattice.neighbours) s.links.push_back({e[0], e[1], k_couple_N_m, 0.0, k_couple_N_m});
+  return s;
+}
+
+LatticeShearStiffness LatticeShearStiffness::Of(const PinLattice& lattice, const SkinMechanics& mech) {
+  std::vector<double> k_tip;
+  k_tip.reserve(lattice.pins.size());
+  for (const auto& pin : lattice.pins) k_tip.push_back(mech.TipStiffness(pin.ring));
+  if (!mech.central_links) return Isotropic(lattice, k_tip, mech.k_couple_N_m);
+  LatticeShearStiffness s;
+  s.k_tip_N_m = std::move(k_tip);
+  for (const auto& e : lattice.neighbours) {
+    const SkinMechanics::CentralLink l = mech.CentralLinkBetween(lattice.pins[e[0]], lattice.pins[e[1]]);
+    s.links.push_back({e[0], e[1], l.k_N_m * l.ey * l.ey, l.k_N_m * l.ey * l.ez, l.k_N_m * l.ez * l.ez});
+  }
+  return s;
+}
+
+QuasiStaticShear SolveQuasiStaticShear(const LatticeShearStiffness& stiffness, const std::vector<double>& normal_N,
+                                       const std::vector<std::uint8_t>& in_contact, double mu, int grid_points,
+                                       double presliding_m) {
+  const size_t n = stiffness.k_tip_N_m.size();
+  if (normal_N.size() != n || in_contact.size() != n) {
+    throw std::invalid_argument("SolveQuasiStaticShear: one shear stiffness, normal load and contact flag per pin");
+  }
+  const Eigen::MatrixXd K = StiffnessMatrix(stiffness);
+  QuasiStaticShear out;
+  out.release_q.assign(n, std::nan(""));
+  out.release_delta_m.assign(n, std::nan(""));
+  ShearState state{std::vector<std::uint8_t>(n, 0), std::vector<std::uint8_t>(n, 0), std::vector<Vec2>(n, kPlateAxis)};
+  std::vector<double> friction_N(n, 0.0);
+  double mu_P = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    if (!in_contact[i]) continue;
+    state.stuck[i] = 1;
+    friction_N[i] = mu * normal_N[i];
+    mu_P += friction_N[i];
+  }
+  if (!(mu_P > 0.0)) throw SimulationError("quasi-static shear: no pin in contact");
+  // Release the pins one by one; every force is affine in delta between two releases.
+  std::vector<Segment> segments;
+  double delta = 0.0;
+  while (std::count(state.stuck.begin(), state.stuck.end(), 1) > 0) {
+    Release next;
+    segments.push_back(SolveSegment(K, friction_N, presliding_m, state, delta, &next));
+    if (next.pin < 0) throw SimulationError("quasi-static shear: the stuck pins carry no load as the plate moves");
+    delta = std::max(delta, next.at);
+    const Segment& last = segments.back();
+    out.release_delta_m[next.pin] = delta;
+    out.release_q[next.pin] = (last.q0 + last.q1 * delta) / mu_P;
+    state.stuck[next.pin] = 0;
+    state.slipped[next.pin] = 1;
+    state.dir[next.pin] = next.dir;
+  }
+  out.gross_delta_m = delta;
+  FillGrid(segments, delta, mu_P, grid_points, out);
+  return out;
+}
 
 QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
@@ -90,56 +225,11 @@ QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, const std::vec
                                        double k_couple_N_m, const std::vector<double>& normal_N,
                                        const std::vector<std::uint8_t>& in_contact, double mu, int grid_points,
                                        double presliding_m) {
-  const int n = static_cast<int>(lattice.pins.size());
-  if (static_cast<int>(normal_N.size()) != n || static_cast<int>(in_contact.size()) != n ||
-      static_cast<int>(k_tip_N_m.size()) != n) {
+  if (k_tip_N_m.size() != lattice.pins.size()) {
     throw std::invalid_argument("SolveQuasiStaticShear: one shear stiffness, normal load and contact flag per pin");
   }
-  Eigen::MatrixXd K = Eigen::VectorXd::Map(k_tip_N_m.data(), n).asDiagonal();
-  for (const auto& e : lattice.neighbours) {
-    K(e[0], e[0]) += k_couple_N_m;
-    K(e[1], e[1]) += k_couple_N_m;
-    K(e[0], e[1]) -= k_couple_N_m;
-    K(e[1], e[0]) -= k_couple_N_m;
-  }
-  QuasiStaticShear out;
-  out.release_q.assign(n, std::nan(""));
-  out.release_delta_m.assign(n, std::nan(""));
-  double mu_P = 0.0;
-  std::vector<std::uint8_t> stuck(n, 0), slipped(n, 0);
-  for (int i = 0; i < n; ++i) {
-    if (!in_contact[i]) continue;
-    stuck[i] = 1;
-    mu_P += mu * normal_N[i];
-  }
-  if (!(mu_P > 0.0)) throw SimulationError("quasi-static shear: no pin in contact");
-  // Release the pins one by one; every force is affine in delta between two releases.
-  std::vector<Segment> segments;
-  double delta = 0.0;
-  while (std::count(stuck.begin(), stuck.end(), 1) > 0) {
-    int release = -1;
-    double at = 0.0;
-    segments.push_back(SolveSegment(K, normal_N, mu, presliding_m, stuck, slipped, delta, &release, &at));
-    if (release < 0) throw SimulationError("quasi-static shear: the stuck pins carry no load as the plate moves");
-    delta = std::max(delta, at);
-    const Segment& last = segments.back();
-    out.release_delta_m[release] = delta;
-    out.release_q[release] = (last.q0 + last.q1 * delta) / mu_P;
-    stuck[release] = 0;
-    slipped[release] = 1;
-  }
-  out.gross_delta_m = delta;
-  if (grid_points > 1) {
-    size_t k = 0;
-    for (int g = 0; g < grid_points; ++g) {
-      const double d = delta * g / (grid_points - 1);
-      // Q is continuous at a release, so either segment gives it there.
-      while (k + 1 < segments.size() && d >= segments[k + 1].delta0) ++k;
-      out.grid_delta_m.push_back(d);
-      out.grid_q.push_back((segments[k].q0 + segments[k].q1 * d) / mu_P);
-    }
-  }
-  return out;
+  return SolveQuasiStaticShear(LatticeShearStiffness::Isotropic(lattice, k_tip_N_m, k_couple_N_m), normal_N,
+                               in_contact, mu, grid_points, presliding_m);
 }
 
 }  // namespace tactip

@@ -9,14 +9,8 @@
 
 namespace tactip {
 
-/// Exact quasi-static Coulomb solution of a membrane-coupled lattice sheared by a rigid
-/// flat plate along one in-plane axis. The shear DOFs of the lattice are world-aligned, so
-/// the loaded component decouples: stiffness K = k_tip I + k_couple L (L the graph
-/// Laplacian of the lattice edges). A sticking pin moves with the plate (u_i = delta), a
-/// slipping pin carries mu N_i, a pin out of contact carries nothing; the normal loads stay
-/// those of the press (a flat plate's contact normal does not turn with shear). The stuck set
-/// only loses pins as delta grows, and between two releases every force is affine in delta,
-/// so the releases are found exactly, one event at a time.
+/// The exact quasi-static Coulomb solution of a lattice sheared by a rigid flat plate
+/// (SolveQuasiStaticShear below).
 struct QuasiStaticShear {
   std::vector<double> release_q;   ///< per pin: Q / (mu P) at which it slips (NaN: not in contact)
   std::vector<double> release_delta_m;  ///< per pin: plate displacement at which it slips
@@ -30,11 +24,46 @@ struct QuasiStaticShear {
   bool StuckAt(size_t i, double delta) const { return delta < release_delta_m[i]; }
 };
 
-/// Exact quasi-static solution of a membrane-coupled lattice (shear stiffness k_tip per
-/// pin, k_couple per lattice edge) under a flat plate moving tangentially: each pin's
-/// release load, event by event. `presliding_m` > 0 ties each sticking pin to the plate by
-/// its pre-sliding spring mu N_i / presliding_m (the friction pass's contact law); 0 is
-/// rigid stick. Throws SimulationError when no pin is in contact.
+/// The in-plane shear stiffness of a lattice's contact points for the exact solution: each
+/// pin's own spring (on both components) and a 2x2 block per lattice edge. Components: y, the
+/// plate's shear axis (the sensor's y), and z, across it.
+struct LatticeShearStiffness {
+  struct Link {
+    int a = 0, b = 0;                        ///< the two pins
+    double k_yy = 0.0, k_yz = 0.0, k_zz = 0.0;  ///< the link's block, N/m
+  };
+  std::vector<double> k_tip_N_m;  ///< per pin
+  std::vector<Link> links;
+
+  /// Links that pull on both components alike (skin.membrane_links = isotropic): k_couple I.
+  static LatticeShearStiffness Isotropic(const PinLattice& lattice, const std::vector<double>& k_tip_N_m,
+                                         double k_couple_N_m);
+  /// The skin's own lattice: SkinMechanics::TipStiffness per pin, and its links isotropic or,
+  /// with mech.central_links, each along itself (k e e^T, SkinMechanics::CentralLinkBetween).
+  static LatticeShearStiffness Of(const PinLattice& lattice, const SkinMechanics& mech);
+};
+
+/// Exact quasi-static Coulomb solution of a membrane-coupled lattice sheared by a rigid
+/// flat plate along y. Two shear DOFs per pin; isotropic links leave the loaded component
+/// decoupled (K = k_tip I + k_couple L, L the graph Laplacian), central links couple it to
+/// the transverse one (Poisson's effect of a central-spring network). A sticking pin moves
+/// with the plate (u_i = (delta, 0)); it slips when its friction force reaches mu N_i in
+/// magnitude, and from then on carries mu N_i in the direction that force had at its
+/// release (for isotropic links always +y, and the solution is exact; with central links the
+/// direction has a transverse share and is held fixed, an approximation: a real slipping pin's
+/// friction turns with its slip, towards +y as the plate drags it); a pin out of
+/// contact carries nothing. The normal loads stay those of the press (a flat plate's contact
+/// normal does not turn with shear). The stuck set only loses pins as delta grows, and
+/// between two releases every force is affine in delta, so the releases are found exactly,
+/// one event at a time. `presliding_m` > 0 ties each sticking pin to the plate by its
+/// pre-sliding spring mu N_i / presliding_m on both components (the friction pass's contact
+/// law); 0 is rigid stick. Throws SimulationError when no pin is in contact,
+/// std::invalid_argument when the loads do not match the lattice.
+QuasiStaticShear SolveQuasiStaticShear(const LatticeShearStiffness& stiffness, const std::vector<double>& normal_N,
+                                       const std::vector<std::uint8_t>& in_contact, double mu, int grid_points,
+                                       double presliding_m = 0.0);
+
+/// The same on isotropic links: shear stiffness k_tip per pin, k_couple per lattice edge.
 QuasiStaticShear SolveQuasiStaticShear(const PinLattice& lattice, double k_tip_N_m, double k_couple_N_m,
                                        const std::vector<double>& normal_N, const std::vector<std::uint8_t>& in_contact,
                                        double mu, int grid_points, double presliding_m = 0.0);

@@ -262,19 +262,37 @@ TEST_F(ValidateContactCliTest, BrushCheckUsesTheSkinPresetsLattice) {
   EXPECT_NE(r.err.find("pressing an uncoupled fingerprint-v1 lattice"), std::string::npos) << r.err;
 }
 
-// The dome check's exact quasi-static solution couples both in-plane components of every
-// link, so a lattice of central links is refused, naming the key, before anything runs.
-TEST(DomeCheckTest, CentralMembraneLinksAreRefusedNamingTheKey) {
+// The dome check's exact solution takes either link model (LatticeShearStiffness::Of).
+TEST(DomeCheckTest, CentralMembraneLinksAreAccepted) {
   SkinConfig skin;
   skin.coupling = "membrane";
   EXPECT_NO_THROW(CheckDomeSkin(skin));
   skin.membrane_links = "central";
-  try {
-    CheckDomeSkin(skin);
-    ADD_FAILURE() << "central links accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("skin.membrane_links = 'central'"), std::string::npos) << e.what();
-  }
+  EXPECT_NO_THROW(CheckDomeSkin(skin));
+}
+
+// v2 on central links (each link along itself): the lattice still gross-slips at mu P and
+// lets go from the outside in, and its releases follow the exact solution's to 0.031 Q/muP
+// (measured 0.0305, inner rings late): that solution holds each slipped pin's friction
+// direction at its release, while the simulated direction turns with the slip, so the
+// release comparison is reported, not judged.
+TEST(DomeCheckTest, CentralLinksGrossSlipAtMuPOutsideInWithTheReleasesReported) {
+  DomeCheckOptions o;
+  o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
+  o.rig.skin.membrane_links = "central";
+  o.rig.sim.timestep_s = 0.001;
+  const DomeCheck c = RunDomeCheck(o);
+  ASSERT_GE(c.pins_in_contact, 19);
+  EXPECT_TRUE(c.central_links);
+  EXPECT_FALSE(DomeCriteria::JudgesRelease(c));
+  DomeCriteria configured;
+  configured.judge_band = false;
+  EXPECT_TRUE(configured.GrossOk(c)) << "gross slip at " << c.gross_q_ratio << " mu P";
+  EXPECT_TRUE(configured.OutsideInOk(c)) << c.outside_in_order;
+  EXPECT_EQ(c.release_pins_compared, c.pins_in_contact);
+  EXPECT_LE(c.release_error_max, 0.04);
+  EXPECT_TRUE(configured.Pass(c));
+  EXPECT_NE(FormatDomeCheck(c, configured).find("(reported; on central links"), std::string::npos);
 }
 
 // Its gel springs rest at each pin's height: dome springs are refused too.
@@ -290,11 +308,7 @@ TEST(DomeCheckTest, DomeNormalSpringsAreRefusedNamingTheKey) {
   }
 }
 
-TEST_F(ValidateContactCliTest, CentralMembraneLinksAreRefusedInOneLine) {
-  const testing::CliResult r =
-      Run("validate contact --skin fingerprint-v2 --set skin.membrane_links=central");
-  EXPECT_EQ(r.code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("skin.membrane_links = 'central'"), std::string::npos) << r.err;
+TEST_F(ValidateContactCliTest, DomeNormalSpringsAreRefusedInOneLine) {
   const testing::CliResult dome = Run("validate contact --skin fingerprint-v2 --set skin.normal_spring=dome");
   EXPECT_EQ(dome.code, 2) << dome.out << dome.err;
   EXPECT_NE(dome.err.find("skin.normal_spring = 'dome'"), std::string::npos) << dome.err;

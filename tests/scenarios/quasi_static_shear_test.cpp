@@ -3,12 +3,16 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "models/skin.h"
 #include "scenarios/quasi_static_shear.h"
+#include "scenarios/rail.h"
 #include "sim/base/errors.h"
 
 namespace tactip {
@@ -101,6 +105,124 @@ TEST(QuasiStaticShearTest, CoupledPairHandsTheSlippingPinsLagToItsNeighbour) {
   EXPECT_TRUE(qs.grid_q.empty());
   EXPECT_THROW(SolveQuasiStaticShear(Chain(2), k, kc, {N0}, {1, 1}, mu, 0), std::invalid_argument);
   EXPECT_THROW(SolveQuasiStaticShear(Chain(2), k, kc, {N0, N1}, {0, 0}, mu, 0), SimulationError);
+}
+
+
+// Two pins joined by one link, as a LatticeShearStiffness with the link's 2x2 block.
+LatticeShearStiffness Pair(double k_tip, double k_link, double ey, double ez) {
+  LatticeShearStiffness s;
+  s.k_tip_N_m = {k_tip, k_tip};
+  s.links.push_back({0, 1, k_link * ey * ey, k_link * ey * ez, k_link * ez * ez});
+  return s;
+}
+
+TEST(QuasiStaticShearTest, ACentralLinkAcrossTheShearCarriesNothing) {
+  // A central link along z does not resist a rigid shear along y: the pins slip on their own
+  // springs, at d_i = mu N_i / k, as if uncoupled.
+  const double k = 10.0, kl = 40.0, mu = 1.0, N0 = 0.3, N1 = 0.6;
+  const QuasiStaticShear qs = SolveQuasiStaticShear(Pair(k, kl, 0.0, 1.0), {N0, N1}, {1, 1}, mu, 0);
+  EXPECT_NEAR(qs.release_delta_m[0], mu * N0 / k, 1e-12);
+  EXPECT_NEAR(qs.release_delta_m[1], mu * N1 / k, 1e-12);
+  // Along y the same link is the isotropic pair's coupling.
+  const QuasiStaticShear along = SolveQuasiStaticShear(Pair(k, kl, 1.0, 0.0), {N0, N1}, {1, 1}, mu, 0);
+  const QuasiStaticShear iso = SolveQuasiStaticShear(Chain(2), k, kl, {N0, N1}, {1, 1}, mu, 0);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(along.release_delta_m[i], iso.release_delta_m[i], 1e-12) << "pin " << i;
+}
+
+TEST(QuasiStaticShearTest, AnObliqueCentralLinkPullsTheStuckPinSidewaysAndReleasesItEarly) {
+  // Link at 45 degrees, block B = (kl / 2) [[1, 1], [1, 1]]. Both stuck: no stretch, pin 0
+  // (N0 < N1) slips at d0 = mu N0 / k along +y. Then pin 0 carries (mu N0, 0) and is free
+  // in both components: (k I + B) u0 = (mu N0, 0) + B (d, 0), and pin 1 (held at (d, 0))
+  // carries f1 = k (d, 0) + B ((d, 0) - u0), whose z share is the link's sideways pull. It
+  // slips when |f1| = mu N1, before its y share alone reaches mu N1.
+  const double k = 10.0, kl = 40.0, mu = 1.0, N0 = 0.3, N1 = 0.6, h = kl / 2.0;
+  const QuasiStaticShear qs = SolveQuasiStaticShear(Pair(k, kl, std::sqrt(0.5), std::sqrt(0.5)), {N0, N1}, {1, 1}, mu, 0);
+  EXPECT_NEAR(qs.release_delta_m[0], mu * N0 / k, 1e-12);
+  // (k I + B)^-1 = [[k + h, -h], [-h, k + h]] / (k (k + 2h)).
+  const auto u0 = [&](double d) {
+    const double by = mu * N0 + h * d, bz = h * d, det = k * (k + 2.0 * h);
+    return std::array<double, 2>{((k + h) * by - h * bz) / det, (-h * by + (k + h) * bz) / det};
+  };
+  const auto f1 = [&](double d) {
+    const auto u = u0(d);
+    const double sy = d - u[0], sz = -u[1];
+    return std::array<double, 2>{k * d + h * (sy + sz), h * (sy + sz)};
+  };
+  const double d1 = qs.release_delta_m[1];
+  const auto f = f1(d1);
+  EXPECT_NEAR(std::hypot(f[0], f[1]), mu * N1, 1e-9) << "released on the friction cone";
+  EXPECT_GT(std::abs(f[1]), 0.01 * mu * N1) << "the link pulls pin 1 sideways";
+  EXPECT_LT(f[0], mu * N1 - 1e-6) << "its y share alone would not release it yet";
+  EXPECT_NEAR(qs.release_q[1], (mu * N0 + f[0]) / (mu * (N0 + N1)), 1e-9);
+  EXPECT_LT(qs.release_q[1], 1.0) << "gross slip below mu P: the last pin's friction turns sideways";
+}
+
+
+// The v2 lattice pressed by a flat plate: a Winkler (parabolic) pressure N_i = N0 (1 - r_i^2 / a^2).
+struct PressedLattice {
+  PinLattice lattice;
+  SkinMechanics mech;
+  std::vector<double> normal_N;
+  std::vector<std::uint8_t> in_contact;
+};
+
+PressedLattice PressedV2(const std::string& links) {
+  SkinConfig skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
+  skin.membrane_links = links;
+  PressedLattice p{PinLattice::Build(skin), {}, {}, {}};
+  p.mech = SkinMechanics::From(skin, p.lattice);
+  const double a = 0.55;  // contact radius over the dome's, about v2's pressed 10 mm
+  for (const auto& pin : p.lattice.pins) {
+    const double r = std::sin(pin.polar_rad);
+    p.normal_N.push_back(r < a ? 0.05 * (1.0 - r * r / (a * a)) : 0.0);
+    p.in_contact.push_back(r < a ? 1 : 0);
+  }
+  return p;
+}
+
+// The pin at the mirror image of `pin` (sign flipped on the sensor's y or z axis), or -1.
+int Mirror(const PinLattice& lattice, int pin, int axis) {
+  auto n = lattice.pins[static_cast<size_t>(pin)].normal;
+  n[static_cast<size_t>(axis)] = -n[static_cast<size_t>(axis)];
+  for (const auto& q : lattice.pins) {
+    if (std::hypot(q.normal[0] - n[0], q.normal[1] - n[1], q.normal[2] - n[2]) < 1e-9) return q.index;
+  }
+  return -1;
+}
+
+// The pin that releases last (at gross slip).
+int Last(const QuasiStaticShear& qs) {
+  int last = -1;
+  for (size_t i = 0; i < qs.release_delta_m.size(); ++i) {
+    if (!std::isnan(qs.release_delta_m[i]) && (last < 0 || qs.release_delta_m[i] > qs.release_delta_m[static_cast<size_t>(last)])) {
+      last = static_cast<int>(i);
+    }
+  }
+  return last;
+}
+
+TEST(QuasiStaticShearTest, CentralLinksOnV2ReleaseMirrorPinsTogether) {
+  const PressedLattice p = PressedV2("central");
+  ASSERT_TRUE(p.mech.central_links);
+  const QuasiStaticShear qs = SolveQuasiStaticShear(LatticeShearStiffness::Of(p.lattice, p.mech), p.normal_N,
+                                                    p.in_contact, 1.0, 0);
+  // The plate moves along y; both mirrors (z -> -z, y -> -y) map the problem onto itself.
+  int mirrored = 0;
+  for (const auto& pin : p.lattice.pins) {
+    if (!p.in_contact[static_cast<size_t>(pin.index)]) continue;
+    for (int axis : {1, 2}) {
+      const int m = Mirror(p.lattice, pin.index, axis);
+      if (m < 0) continue;
+      ++mirrored;
+      EXPECT_NEAR(qs.release_delta_m[static_cast<size_t>(m)], qs.release_delta_m[static_cast<size_t>(pin.index)],
+                  1e-9 * qs.gross_delta_m)
+          << "pins " << pin.index << " and " << m;
+    }
+  }
+  EXPECT_GT(mirrored, 40);
+  // Each slipped pin keeps the sideways share its friction had at release, so the plate's
+  // load at gross slip stays short of mu P.
+  EXPECT_LT(qs.release_q[static_cast<size_t>(Last(qs))], 1.0 - 1e-3);
 }
 
 }  // namespace
