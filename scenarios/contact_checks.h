@@ -101,10 +101,6 @@ struct DomeCheck {
   double mu_P_N = 0.0;
   int pins_in_contact = 0;
   double gross_q_ratio = 0.0;     ///< Q / (mu P) when every contacting pin slides (1 = Coulomb)
-  /// The lattice's membrane links act along themselves (skin.membrane_links = central): its
-  /// exact solution then holds each slipped pin's friction direction at its release
-  /// (SolveQuasiStaticShear), so the release comparison is reported, not judged.
-  bool central_links = false;
   /// Fraction of samples with 0.1 <= Q/muP <= 0.9 whose c/a lies between the
   /// Cattaneo-Mindlin (1 - q)^(1/3) and brush (1 - q)^(1/4) curves (within tolerance).
   double between_fraction = 0.0;
@@ -179,10 +175,8 @@ struct DomeCriteria {
   bool GrossOk(const DomeCheck& c) const;
   bool OutsideInOk(const DomeCheck& c) const;
   bool ReleaseOk(const DomeCheck& c) const;
-  /// Whether the release comparison is judged: on isotropic links only (DomeCheck::central_links).
-  static bool JudgesRelease(const DomeCheck& c) { return !c.central_links; }
   bool BandOk(const DomeCheck& c) const;
-  /// Every criterion, the band and the releases only where judged.
+  /// Every criterion, the band only where judged.
   bool Pass(const DomeCheck& c) const;
 };
 

@@ -48,14 +48,15 @@ struct LatticeShearStiffness {
 /// decoupled (K = k_tip I + k_couple L, L the graph Laplacian), central links couple it to
 /// the transverse one (Poisson's effect of a central-spring network). A sticking pin moves
 /// with the plate (u_i = (delta, 0)); it slips when its friction force reaches mu N_i in
-/// magnitude, and from then on carries mu N_i in the direction that force had at its
-/// release (for isotropic links always +y, and the solution is exact; with central links the
-/// direction has a transverse share and is held fixed, an approximation: a real slipping pin's
-/// friction turns with its slip, towards +y as the plate drags it); a pin out of
+/// magnitude, and from then on carries mu N_i along its slip: from the direction its force had
+/// at release (on isotropic links always +y), the direction turns so that the pin slides along
+/// it (its slip rate (1, 0) - du_i/ddelta parallel to it) with the lattice in equilibrium —
+/// on central links, whose slipped pins let go with a sideways share, towards +y as the plate
+/// drags them, integrated over 1000 steps of the travel to gross slip; a pin out of
 /// contact carries nothing. The normal loads stay those of the press (a flat plate's contact
 /// normal does not turn with shear). The stuck set only loses pins as delta grows, and
-/// between two releases every force is affine in delta, so the releases are found exactly,
-/// one event at a time. `presliding_m` > 0 ties each sticking pin to the plate by its
+/// between two releases (and turns) every force is affine in delta, so the releases are found
+/// exactly, one event at a time. `presliding_m` > 0 ties each sticking pin to the plate by its
 /// pre-sliding spring mu N_i / presliding_m on both components (the friction pass's contact
 /// law); 0 is rigid stick. Throws SimulationError when no pin is in contact,
 /// std::invalid_argument when the loads do not match the lattice.

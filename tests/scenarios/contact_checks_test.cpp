@@ -271,28 +271,24 @@ TEST(DomeCheckTest, CentralMembraneLinksAreAccepted) {
   EXPECT_NO_THROW(CheckDomeSkin(skin));
 }
 
-// v2 on central links (each link along itself): the lattice still gross-slips at mu P and
-// lets go from the outside in, and its releases follow the exact solution's to 0.031 Q/muP
-// (measured 0.0305, inner rings late): that solution holds each slipped pin's friction
-// direction at its release, while the simulated direction turns with the slip, so the
-// release comparison is reported, not judged.
-TEST(DomeCheckTest, CentralLinksGrossSlipAtMuPOutsideInWithTheReleasesReported) {
+// v2 on central links (each link along itself): the lattice gross-slips at mu P, lets go from
+// the outside in, and every pin slips at its exact release, whose friction turns with its slip
+// (measured max 0.0021 Q/muP; held at the direction of release instead, the inner rings came
+// out up to 0.031 early).
+TEST(DomeCheckTest, CentralLinksSlipOutsideInAtTheirExactReleases) {
   DomeCheckOptions o;
   o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
   o.rig.skin.membrane_links = "central";
   o.rig.sim.timestep_s = 0.001;
   const DomeCheck c = RunDomeCheck(o);
   ASSERT_GE(c.pins_in_contact, 19);
-  EXPECT_TRUE(c.central_links);
-  EXPECT_FALSE(DomeCriteria::JudgesRelease(c));
   DomeCriteria configured;
   configured.judge_band = false;
   EXPECT_TRUE(configured.GrossOk(c)) << "gross slip at " << c.gross_q_ratio << " mu P";
   EXPECT_TRUE(configured.OutsideInOk(c)) << c.outside_in_order;
   EXPECT_EQ(c.release_pins_compared, c.pins_in_contact);
-  EXPECT_LE(c.release_error_max, 0.04);
+  EXPECT_TRUE(configured.ReleaseOk(c)) << "largest release error " << c.release_error_max << " Q/muP";
   EXPECT_TRUE(configured.Pass(c));
-  EXPECT_NE(FormatDomeCheck(c, configured).find("(reported; on central links"), std::string::npos);
 }
 
 // Its gel springs rest at each pin's height: dome springs are refused too.
