@@ -140,7 +140,8 @@ struct SkinConfig {
       "from; a ridge rocks only across itself, so the ridges enter by the link's radial share c: k = 1 / (1 / "
       "k_link + 2 c^2 / k_rock), which is k_couple for a radial link, k_link along a ring. At a step of 0.25 ms "
       "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.5 mm/s (README 'Membrane "
-      "links'); opt-in, refused by 'validate contact' (its exact solution has isotropic links).",
+      "links'); opt-in. 'validate contact' judges it against its exact quasi-static solution on central links "
+      "(README 'Contact validation').",
       Choices{"isotropic", "central"});
     v("normal_spring", normal_spring, "",
       "Where each lattice pin's normal (gel column) spring rests once the pin shears (coupling membrane or none; "
