@@ -65,7 +65,9 @@ double LeavesCone(const Vec2& f0, const Vec2& f1, double limit) {
   const double disc = b * b - a * c;
   if (disc < 0.0) return std::numeric_limits<double>::infinity();
   const double d = (-b + std::sqrt(disc)) / a;
-  // A force that only shrinks from here (the root behind it, its y share falling) never releases.
+  // A force that changes only against the plate's pull (f1 along -y, no z share) is being
+  // unloaded by the lattice: it would leave the disc only after reversing through zero, in the
+  // direction opposite to the load, which the monotone ramp to gross slip does not reach.
   return f1[0] > 0.0 || std::abs(f1[1]) > 0.0 ? d : std::numeric_limits<double>::infinity();
 }
 
