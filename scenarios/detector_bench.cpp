@@ -118,9 +118,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
     throw InputError(fmt::format("--runs = {}: the benchmark needs at least 4 (cross-validation needs 2 training runs)",
                                  opts.runs));
   }
-  std::error_code ec;
-  std::filesystem::create_directories(opts.out_dir, ec);
-  if (ec) throw InputError(fmt::format("cannot create output folder '{}': {}", opts.out_dir, ec.message()));
+  CreateOutputFolder(opts.out_dir);
 
   BenchResult r;
   r.seed = opts.seed;

@@ -115,11 +115,7 @@ std::vector<SweepDesignResult> RunSweep(const SweepOptions& opts,
   }
   // So must the plotting tool: a missing matplotlib fails now, not after hours of runs.
   if (SweepDrawsHeatmaps(opts)) CheckPlotting();
-  std::error_code ec;
-  std::filesystem::create_directories(opts.out_dir, ec);
-  if (ec || !std::filesystem::is_directory(opts.out_dir)) {
-    throw InputError("cannot create output folder '" + opts.out_dir + "': " + ec.message());
-  }
+  CreateOutputFolder(opts.out_dir);
   const std::filesystem::path dir(opts.out_dir);
   CheckWritableLocation((dir / "designs.csv").string());
   if (opts.started) opts.started(designs.size());

@@ -109,6 +109,13 @@ void CheckWritableLocation(const std::string& path) {
   std::remove(probe.c_str());
 }
 
+void CreateOutputFolder(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("cannot create output folder '" + dir + "': " + ec.message());
+  if (!fs::is_directory(dir, ec)) throw InputError("cannot create output folder '" + dir + "': it is a file");
+}
+
 int ReserveFileSpace(const std::string& path, long long size) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
   if (fd < 0) return errno;

@@ -14,6 +14,10 @@ void WriteFileAtomic(const std::string& path, const std::string& text);
 /// in it (with the system's reason), so long jobs fail before they start rather than at the end.
 void CheckWritableLocation(const std::string& path);
 
+/// Creates the output folder `dir` and its parents if missing; throws InputError
+/// ("cannot create output folder 'DIR': reason") when it cannot, or when `dir` names a file.
+void CreateOutputFolder(const std::string& dir);
+
 /// Allocates disk space for the first `size` bytes of the existing file `path` (holes
 /// included, contents unchanged), so that later writes within them cannot run out of
 /// space. Returns 0, or the errno value saying why not (ENOSPC: the disk is full).

@@ -1,5 +1,5 @@
 // File output helpers: same-file detection through links, the writable-location check,
-// and the removal of temporary files left by processes that no longer run.
+// the output folder's creation and the removal of temporary files left by processes that no longer run.
 
 #include "sim/base/files.h"
 
@@ -100,6 +100,27 @@ TEST_F(FilesTest, WritableLocationNeedsAFolderThatTakesNewFiles) {
   // /proc exists but takes no new files (whoever asks): the system's reason is given.
   const std::string proc = message("/proc/x.h5");
   EXPECT_EQ(proc.rfind("cannot write '/proc/x.h5': cannot create a file in folder '/proc' (", 0), 0u) << proc;
+}
+
+TEST_F(FilesTest, OutputFolderIsCreatedWithItsParentsOrRefusedInOneLine) {
+  EXPECT_NO_THROW(CreateOutputFolder(P("a/b/c")));
+  EXPECT_TRUE(fs::is_directory(P("a/b/c")));
+  EXPECT_NO_THROW(CreateOutputFolder(P("a/b/c"))) << "an existing folder is fine";
+  auto message = [](const std::string& dir) {
+    try {
+      CreateOutputFolder(dir);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  Touch("file");
+  const std::string on_file = message(P("file"));
+  EXPECT_EQ(on_file.rfind("cannot create output folder '" + P("file") + "': ", 0), 0u) << on_file;
+  const std::string below_file = message(P("file/sub"));
+  EXPECT_EQ(below_file.rfind("cannot create output folder '" + P("file/sub") + "': ", 0), 0u) << below_file;
+  EXPECT_EQ(below_file.find('\n'), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(P("file"))) << "the file in the way is left as it was";
 }
 
 }  // namespace

@@ -106,9 +106,7 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
   for (const RailScenarioConfig& row : rows) a.loop.ValidateFor(row.rail);
   NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.out, ec);
-    if (ec) throw InputError("cannot create output folder '" + a.out + "': " + ec.message());
+    CreateOutputFolder(a.out);
     CheckWritableLocation((std::filesystem::path(a.out) / "trials.csv").string());
   }
   // The trials, row by row, with a progress line per trial.
@@ -204,9 +202,7 @@ int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
   const RailScenarioConfig cfg = RailFamily(FindScenario("incipient")).Load(a.config.Source());
   NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.out, ec);
-    if (ec) throw InputError("cannot create output folder '" + a.out + "': " + ec.message());
+    CreateOutputFolder(a.out);
     CheckWritableLocation((std::filesystem::path(a.out) / "trials.csv").string());
   }
   StopTrialOptions o;

@@ -39,9 +39,7 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   std::string csv_path;
   NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.out, ec);
-    if (ec) throw InputError("cannot create output folder '" + a.out + "': " + ec.message());
+    CreateOutputFolder(a.out);
     csv_path = (std::filesystem::path(a.out) / "stability.csv").string();
     CheckWritableLocation(csv_path);
   }
