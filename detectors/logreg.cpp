@@ -10,6 +10,7 @@
 #include <limits>
 #include <utility>
 
+#include "detectors/library_fit.h"
 #include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
@@ -31,27 +32,13 @@ using LinearModelPtr = std::unique_ptr<::model, LinearModelFree>;
 /// Routes liblinear's progress printing into a no-op (the hook is liblinear's own global).
 void SilenceLiblinear() { ::set_print_string_function([](const char*) {}); }
 
-/// Dense rows as liblinear nodes: indices 1..d, the bias node d+1, then the -1 terminator.
-struct NodeRows {
-  std::vector<feature_node> nodes;
-  std::vector<feature_node*> rows;
-
-  explicit NodeRows(const Eigen::MatrixXf& x) {
-    const Eigen::Index n = x.rows(), d = x.cols();
-    nodes.resize(static_cast<size_t>(n * (d + 2)));
-    rows.resize(static_cast<size_t>(n));
-    for (Eigen::Index i = 0; i < n; ++i) {
-      feature_node* row = &nodes[static_cast<size_t>(i * (d + 2))];
-      for (Eigen::Index j = 0; j < d; ++j) row[j] = feature_node{static_cast<int>(j + 1), static_cast<double>(x(i, j))};
-      row[d] = feature_node{static_cast<int>(d + 1), kBias};
-      row[d + 1] = feature_node{-1, 0.0};
-      rows[static_cast<size_t>(i)] = row;
-    }
-  }
+/// Dense rows as liblinear nodes, with the bias node.
+struct LinearRows : NodeRows<feature_node> {
+  explicit LinearRows(const Eigen::MatrixXf& x) : NodeRows<feature_node>(x, kBias) {}
 };
 
 /// Trains one L2R_LR model (the returned model owns its weights).
-LinearModelPtr TrainOne(NodeRows& rows, std::vector<double>& y, int dim, double c) {
+LinearModelPtr TrainOne(LinearRows& rows, std::vector<double>& y, int dim, double c) {
   ::problem prob{};
   prob.l = static_cast<int>(y.size());
   prob.n = dim + 1;
@@ -232,33 +219,16 @@ std::unique_ptr<LogRegDetector> LogRegDetector::Train(const TrainingSet& ts, con
   for (double c : opts.c_grid) grid.push_back({c, 0.0});
   SilenceLiblinear();
 
-  // Grouped CV: one liblinear problem per fold, one model per candidate.
-  const CvFitPredict fit = [dim](const Eigen::MatrixXf& x_train, const std::vector<int>& y_train,
-                                 const Eigen::MatrixXf& x_test, const std::vector<CvCandidate>& candidates) {
-    NodeRows train_rows(x_train);
-    const NodeRows test_rows(x_test);
-    std::vector<double> y(y_train.begin(), y_train.end());
-    std::vector<std::vector<int>> pred(candidates.size(), std::vector<int>(test_rows.rows.size()));
-    for (size_t c = 0; c < candidates.size(); ++c) {
-      const LinearModelPtr m = TrainOne(train_rows, y, dim, candidates[c].c);
-      for (size_t i = 0; i < test_rows.rows.size(); ++i) {
-        pred[c][i] = static_cast<int>(::predict(m.get(), test_rows.rows[i]));
-      }
-    }
-    return pred;
+  // Grouped CV: one liblinear problem per fold, one model per candidate; then the refit on
+  // every row with the best C, round-tripped through liblinear's text.
+  const auto train = [dim](LinearRows& rows, std::vector<double>& y, const CvCandidate& candidate) {
+    return TrainOne(rows, y, dim, candidate.c);
   };
-  const CvReport report = GroupedGridSearch(ts, opts.cv_folds, grid, fit);
-
-  // Refit on every row with the best C, round-tripped through liblinear's text.
-  Standardizer standardizer = Standardizer::Fit(ts.x);
-  Eigen::MatrixXf x = ts.x;
-  standardizer.ApplyRows(x);
-  std::string text;
-  {
-    NodeRows rows(x);
-    std::vector<double> y(ts.y.begin(), ts.y.end());
-    text = ModelText(TrainOne(rows, y, dim, report.best_c).get());
-  }
+  const auto predict = [](const ::model* m, const feature_node* row) { return ::predict(m, row); };
+  const CvReport report =
+      GroupedGridSearch(ts, opts.cv_folds, grid, FitAndPredictEachCandidate<LinearRows>(train, predict));
+  auto [standardizer, text] =
+      RefitOnEveryRow<LinearRows>(ts, {report.best_c, 0.0}, train, [](const ::model* m) { return ModelText(m); });
   auto impl = MakeImpl(opts.features, report.best_c, std::move(standardizer), std::move(text), "(trained logreg)", 0);
   impl->cv = report;
   return std::unique_ptr<LogRegDetector>(new LogRegDetector(std::move(impl)));

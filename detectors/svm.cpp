@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "detectors/library_fit.h"
 #include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
@@ -41,23 +42,8 @@ void SilenceLibsvm() { svm_set_print_string_function([](const char*) {}); }
 /// "svm-linear" / "svm-rbf".
 const char* KindName(SvmDetector::Kernel k) { return k == SvmDetector::Kernel::kRbf ? "svm-rbf" : "svm-linear"; }
 
-/// Dense rows as libsvm nodes: indices 1..d, then the -1 terminator, row after row.
-struct NodeRows {
-  std::vector<svm_node> nodes;
-  std::vector<svm_node*> rows;
-
-  explicit NodeRows(const Eigen::MatrixXf& x) {
-    const Eigen::Index n = x.rows(), d = x.cols();
-    nodes.resize(static_cast<size_t>(n * (d + 1)));
-    rows.resize(static_cast<size_t>(n));
-    for (Eigen::Index i = 0; i < n; ++i) {
-      svm_node* row = &nodes[static_cast<size_t>(i * (d + 1))];
-      for (Eigen::Index j = 0; j < d; ++j) row[j] = svm_node{static_cast<int>(j + 1), static_cast<double>(x(i, j))};
-      row[d] = svm_node{-1, 0.0};
-      rows[static_cast<size_t>(i)] = row;
-    }
-  }
-};
+/// Dense rows as libsvm nodes (no bias node).
+using SvmRows = NodeRows<svm_node>;
 
 /// C-SVC parameters: no class weights, no probability model, shrinking on.
 svm_parameter MakeParameter(SvmDetector::Kernel kernel, double c, double gamma) {
@@ -81,7 +67,7 @@ svm_parameter MakeParameter(SvmDetector::Kernel kernel, double c, double gamma) 
 }
 
 /// Trains one C-SVC on `rows` (which must outlive the returned model).
-SvmModelPtr TrainOne(NodeRows& rows, std::vector<double>& y, const svm_parameter& param) {
+SvmModelPtr TrainOne(SvmRows& rows, std::vector<double>& y, const svm_parameter& param) {
   svm_problem prob{};
   prob.l = static_cast<int>(y.size());
   prob.y = y.data();
@@ -371,34 +357,16 @@ std::unique_ptr<SvmDetector> SvmDetector::Train(const TrainingSet& ts, Kernel ke
   }
   SilenceLibsvm();
 
-  // Grouped CV: one libsvm problem per fold, one model per candidate.
-  const CvFitPredict fit = [kernel](const Eigen::MatrixXf& x_train, const std::vector<int>& y_train,
-                                    const Eigen::MatrixXf& x_test, const std::vector<CvCandidate>& candidates) {
-    NodeRows train_rows(x_train);
-    const NodeRows test_rows(x_test);
-    std::vector<double> y(y_train.begin(), y_train.end());
-    std::vector<std::vector<int>> pred(candidates.size(), std::vector<int>(test_rows.rows.size()));
-    for (size_t c = 0; c < candidates.size(); ++c) {
-      const SvmModelPtr model = TrainOne(train_rows, y, MakeParameter(kernel, candidates[c].c, candidates[c].gamma));
-      for (size_t i = 0; i < test_rows.rows.size(); ++i) {
-        pred[c][i] = static_cast<int>(svm_predict(model.get(), test_rows.rows[i]));
-      }
-    }
-    return pred;
+  // Grouped CV: one libsvm problem per fold, one model per candidate; then the refit on every
+  // row with the best parameters, round-tripped through libsvm's text.
+  const auto train = [kernel](SvmRows& rows, std::vector<double>& y, const CvCandidate& candidate) {
+    return TrainOne(rows, y, MakeParameter(kernel, candidate.c, candidate.gamma));
   };
-  const CvReport report = GroupedGridSearch(ts, opts.cv_folds, grid, fit);
-
-  // Refit on every row with the best parameters, round-tripped through libsvm's text.
-  Standardizer standardizer = Standardizer::Fit(ts.x);
-  Eigen::MatrixXf x = ts.x;
-  standardizer.ApplyRows(x);
-  std::string text;
-  {
-    NodeRows rows(x);
-    std::vector<double> y(ts.y.begin(), ts.y.end());
-    const SvmModelPtr model = TrainOne(rows, y, MakeParameter(kernel, report.best_c, report.best_gamma));
-    text = ModelText(model.get());
-  }
+  const auto predict = [](const svm_model* m, const svm_node* row) { return svm_predict(m, row); };
+  const CvReport report =
+      GroupedGridSearch(ts, opts.cv_folds, grid, FitAndPredictEachCandidate<SvmRows>(train, predict));
+  auto [standardizer, text] = RefitOnEveryRow<SvmRows>(ts, {report.best_c, report.best_gamma}, train,
+                                                       [](const svm_model* m) { return ModelText(m); });
   auto impl = MakeImpl(kernel, opts.features, report.best_c, report.best_gamma, std::move(standardizer),
                        std::move(text), "(trained " + std::string(KindName(kernel)) + ")", 0);
   impl->cv = report;
