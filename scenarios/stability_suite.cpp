@@ -35,9 +35,9 @@ std::vector<StabilityCase> StimulusSkinCases() {
   return out;
 }
 
-std::vector<StabilityCase> BuildCases() {
-  std::vector<StabilityCase> cases = StimulusSkinCases();
-  const std::vector<StabilityCase> extreme = {
+// Stiff skins and stiff couplings: modes whose limit falls below the configured step.
+std::vector<StabilityCase> StiffnessCases() {
+  return {
       // Stiff skins: the pin normal mode's limit falls below the 2 ms step.
       {"gel-x100", "gel 100x stiffer (10 MPa): pin normal mode omega x10", "", {"skin.gel_modulus_kpa=10000"}},
       {"gel-x100-auto-dt", "the same at the step --auto-timestep picks", "", {"skin.gel_modulus_kpa=10000"}, E::kHeld,
@@ -67,6 +67,12 @@ std::vector<StabilityCase> BuildCases() {
        {"skin.rim=clamped", "skin.thickness_mm=0.1", "skin.skin_modulus_mpa=100"}},
       {"rim-thin-x100-auto-dt", "the same at the step --auto-timestep picks", "",
        {"skin.rim=clamped", "skin.thickness_mm=0.1", "skin.skin_modulus_mpa=100"}, E::kHeld, true},
+  };
+}
+
+// Loads beyond the rig's: object mass, friction, fast retraction.
+std::vector<StabilityCase> LoadCases() {
+  return {
       // Object mass from 5 g to 5 kg (the skin holds ~3 N at mu = 1).
       {"mass-5g", "a 5 g object (held to the end of the contact)", "", {"object.mass_kg=0.005"}, E::kHeld},
       {"mass-1kg", "a 1 kg object (9.8 N against ~3.3 N of friction: not held)", "", {"object.mass_kg=1"},
@@ -89,6 +95,12 @@ std::vector<StabilityCase> BuildCases() {
       {"retract-50mm-s", "retraction at 50 mm/s", "", {"rail.retract_speed_mm_s=50"}, E::kHeld},
       {"v2-retract-50mm-s", "fingerprint-v2, retraction at 50 mm/s", "fingerprint-v2", {"rail.retract_speed_mm_s=50"},
        E::kHeld},
+  };
+}
+
+// Steps, ridge geometry, indentation depth, an empty contact and the incipient rig.
+std::vector<StabilityCase> StepGeometryAndRigCases() {
+  return {
       // Large steps (contact.timeconst_s >= 2 dt).
       {"dt-2.5ms", "2.5 ms step", "", {"sim.timestep_s=0.0025", "contact.timeconst_s=0.005"}, E::kHeld},
       {"dt-5ms", "5 ms step", "", {"sim.timestep_s=0.005", "contact.timeconst_s=0.01"}},
@@ -122,7 +134,13 @@ std::vector<StabilityCase> BuildCases() {
       {"incipient-rig", "the incipient scenario's defaults on the short protocol, retracting at 0.3 mm/s", "",
        {"rail.retract_speed_mm_s=0.3"}, E::kHeld, false, "incipient"},
   };
-  cases.insert(cases.end(), extreme.begin(), extreme.end());
+}
+
+std::vector<StabilityCase> BuildCases() {
+  std::vector<StabilityCase> cases = StimulusSkinCases();
+  for (const auto& group : {StiffnessCases(), LoadCases(), StepGeometryAndRigCases()}) {
+    cases.insert(cases.end(), group.begin(), group.end());
+  }
   return cases;
 }
 
