@@ -9,6 +9,7 @@
 #include <thread>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "sim/simulation.h"
 
@@ -198,13 +199,14 @@ const StabilityCase& FindStabilityCase(const std::string& name) {
   throw InputError("--case '" + name + "': unknown case ('tactip stability --list' lists them)");
 }
 
-ConfigSource StabilityCaseSource(const StabilityCase& c) {
+ConfigSource StabilityCaseSource(const StabilityCase& c, const std::vector<std::string>& sets) {
   ConfigSource src;
   src.overrides = StabilityProtocol();
   if (!c.skin.empty()) {
     const auto preset = SkinPresetOverrides(c.skin);
     src.overrides.insert(src.overrides.end(), preset.begin(), preset.end());
   }
+  src.overrides.insert(src.overrides.end(), sets.begin(), sets.end());
   src.overrides.insert(src.overrides.end(), c.sets.begin(), c.sets.end());
   src.auto_timestep = c.auto_timestep;
   return src;
@@ -236,11 +238,31 @@ bool RefusalIsClear(const std::string& message, const std::vector<std::string>& 
   return names_key && safe_value;
 }
 
-StabilityResult RunStabilityCase(const StabilityCase& c, const std::atomic<bool>* stop) {
+void CheckSuiteSets(const std::vector<std::string>& sets, const std::vector<const StabilityCase*>& cases) {
+  if (sets.empty()) return;
+  std::vector<std::string> scenarios;
+  for (const StabilityCase* c : cases) {
+    if (std::find(scenarios.begin(), scenarios.end(), c->scenario) == scenarios.end()) scenarios.push_back(c->scenario);
+  }
+  for (const std::string& name : scenarios) {
+    ConfigSource src;
+    src.overrides = StabilityProtocol();
+    src.overrides.insert(src.overrides.end(), sets.begin(), sets.end());
+    try {
+      FindScenario(name).Check(src);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--set: {} (on the {} scenario's defaults)", e.what(), name));
+    }
+  }
+}
+
+StabilityResult RunStabilityCase(const StabilityCase& c, const std::atomic<bool>* stop,
+                                 const std::vector<std::string>& sets) {
   const auto wall0 = std::chrono::steady_clock::now();
   StabilityResult r;
   r.c = &c;
   r.timestep_s = kNaN;
+  r.suite_sets = sets;
   const auto finish = [&](CaseOutcome o, std::string message) {
     r.outcome = o;
     r.message = std::move(message);
@@ -251,7 +273,7 @@ StabilityResult RunStabilityCase(const StabilityCase& c, const std::atomic<bool>
   const RailFamilyScenario& registered = RailFamily(FindScenario(c.scenario));
   RailScenarioConfig cfg;
   try {
-    cfg = registered.Load(StabilityCaseSource(c));
+    cfg = registered.Load(StabilityCaseSource(c, sets));
   } catch (const InputError& e) {
     std::vector<std::string> keys;
     for (const auto& f : registered.Describe(ConfigSource{})) keys.push_back(f.key);
@@ -291,6 +313,7 @@ std::vector<StabilityResult> RunStabilitySuite(const StabilityOptions& opts) {
   } else {
     for (const auto& n : opts.cases) todo.push_back(&FindStabilityCase(n));
   }
+  CheckSuiteSets(opts.sets, todo);
   const int total = static_cast<int>(todo.size());
   const int jobs = std::max(
       1, std::min(total, opts.jobs > 0 ? opts.jobs : static_cast<int>(std::thread::hardware_concurrency())));
@@ -309,7 +332,7 @@ std::vector<StabilityResult> RunStabilitySuite(const StabilityOptions& opts) {
       }
       try {
         if (opts.stop && opts.stop->load()) throw Interrupted();
-        StabilityResult res = RunStabilityCase(*todo[i], opts.stop);
+        StabilityResult res = RunStabilityCase(*todo[i], opts.stop, opts.sets);
         std::lock_guard lock(mu);
         results[i] = std::move(res);
         ++done;
@@ -336,7 +359,12 @@ std::string FormatStabilityCases(const std::vector<StabilityCase>& cases) {
 }
 
 std::string FormatStabilityTable(const std::vector<StabilityResult>& results) {
-  std::string out = fmt::format("{:<24} {:<8} {:>6} {:>8} {:>8} {:>6} {:>8} {:>8} {:>8} {:>7} {:>6} {:>6}  {}\n",
+  std::string out;
+  if (!results.empty() && !results.front().suite_sets.empty()) {
+    out += fmt::format("every case with --set {} (after its skin preset, before its own keys)\n",
+                       fmt::join(results.front().suite_sets, " "));
+  }
+  out += fmt::format("{:<24} {:<8} {:>6} {:>8} {:>8} {:>6} {:>8} {:>8} {:>8} {:>7} {:>6} {:>6}  {}\n",
                                 "case", "outcome", "dt_ms", "held", "onset_s", "flick", "speed_px", "creep_um",
                                 "e_gain", "sim_s", "wall_s", "exp", "sets");
   for (const auto& r : results) {
@@ -371,7 +399,8 @@ std::string FormatStabilityTable(const std::vector<StabilityResult>& results) {
 std::string StabilityCsv(const std::vector<StabilityResult>& results) {
   std::string out =
       "case,scenario,sets,expect,outcome,timestep_s,held,gross_slip_onset_s,object_fall_s,predicted_onset_s,"
-      "flicker_max,pin_speed_px,stick_creep_um,energy_gain,mujoco_warnings,sim_time_s,wall_time_s,message\n";
+      "flicker_max,pin_speed_px,stick_creep_um,energy_gain,mujoco_warnings,sim_time_s,wall_time_s,message,"
+      "suite_sets\n";
   for (const auto& r : results) {
     const StabilityCase& c = *r.c;
     out += fmt::format("{},{},{},{},{},{},", Csv(c.name), Csv(c.scenario), Csv(CaseSettings(c)), ExpectName(c.held),
@@ -385,7 +414,8 @@ std::string StabilityCsv(const std::vector<StabilityResult>& results) {
     } else {
       out += ",,,,,,,,,,";
     }
-    out += fmt::format("{},{}\n", Num(r.wall_time_s, "{:.3f}"), Csv(r.message));
+    out += fmt::format("{},{},{}\n", Num(r.wall_time_s, "{:.3f}"), Csv(r.message),
+                       Csv(fmt::format("{}", fmt::join(r.suite_sets, " "))));
   }
   return out;
 }

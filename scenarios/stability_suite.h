@@ -42,8 +42,14 @@ const std::vector<std::string>& StabilityProtocol();
 /// The case named `name`; throws InputError listing the known names.
 const StabilityCase& FindStabilityCase(const std::string& name);
 
-/// The case's config source: the short protocol, the skin preset, then its own keys.
-ConfigSource StabilityCaseSource(const StabilityCase& c);
+/// The case's config source: the short protocol, the skin preset, the suite's `sets`
+/// (`tactip stability --set`, applied to every case), then the case's own keys.
+ConfigSource StabilityCaseSource(const StabilityCase& c, const std::vector<std::string>& sets = {});
+
+/// Checks the suite's `sets` before any case runs: each must be accepted by the short
+/// protocol on the defaults of every scenario in `cases`; throws InputError
+/// ("--set: <the scenario's reason>") otherwise.
+void CheckSuiteSets(const std::vector<std::string>& sets, const std::vector<const StabilityCase*>& cases);
 
 /// How a case ended.
 enum class CaseOutcome { kHealthy, kRefused, kFailed };
@@ -59,18 +65,22 @@ struct StabilityResult {
   std::optional<RailRunSummary> run;   ///< the run's figures, when it ran to the end
   double timestep_s = 0.0;             ///< the step it ran at (NaN when refused)
   double wall_time_s = 0.0;            ///< the case's wall time, loading and building included
+  std::vector<std::string> suite_sets; ///< the suite's --set keys it ran with, beneath its own
 };
 
 /// True when `message` is a clear refusal: one line that starts with a config key of the
 /// scenario ("key = value: ...") and names a safe value ("use ...", "must be ...").
 bool RefusalIsClear(const std::string& message, const std::vector<std::string>& keys);
 
-/// Runs one case (run 0 of seed 1) and judges it. Throws Interrupted when `*stop` becomes true.
-StabilityResult RunStabilityCase(const StabilityCase& c, const std::atomic<bool>* stop = nullptr);
+/// Runs one case (run 0 of seed 1) with the suite's `sets` (StabilityCaseSource) and judges
+/// it. Throws Interrupted when `*stop` becomes true.
+StabilityResult RunStabilityCase(const StabilityCase& c, const std::atomic<bool>* stop = nullptr,
+                                 const std::vector<std::string>& sets = {});
 
 /// Options of a suite run.
 struct StabilityOptions {
   std::vector<std::string> cases;  ///< names to run (empty: every case); unknown names throw InputError
+  std::vector<std::string> sets;   ///< key=value for every case (StabilityCaseSource); checked first
   int jobs = 0;                    ///< worker threads (0 = all cores)
   const std::atomic<bool>* stop = nullptr;
   /// Called as each case finishes (from a worker thread, one call at a time).
@@ -82,9 +92,11 @@ std::vector<StabilityResult> RunStabilitySuite(const StabilityOptions& opts);
 
 /// The list of cases: name, what it sets, what it tests.
 std::string FormatStabilityCases(const std::vector<StabilityCase>& cases);
-/// The results as a fixed-width table, a refusal or failure message under its row.
+/// The results as a fixed-width table, a refusal or failure message under its row; a first
+/// line names the suite's --set keys when the cases ran with any.
 std::string FormatStabilityTable(const std::vector<StabilityResult>& results);
-/// The results as CSV, one row per case.
+/// The results as CSV, one row per case; the last column, suite_sets, holds the suite's --set
+/// keys (space-separated, empty without).
 std::string StabilityCsv(const std::vector<StabilityResult>& results);
 /// The settings of a case as one line: "--skin NAME key=value ..." ("-" if none).
 std::string CaseSettings(const StabilityCase& c);

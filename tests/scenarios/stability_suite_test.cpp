@@ -1,9 +1,10 @@
 // The stability suite and the automatic timestep: every refusal of the suite with its message
 // (through the library and the command line, exit code 2), the case table, one healthy and
-// one refused case through `tactip stability --case`, the empty contact, and the step that
-// --auto-timestep picks (stable, refused 10 % above, smaller for a stiff skin, the validated
-// step of the shear-DOF skins), and the whole suite through the command (~40 s on 2 cores):
-// exit 0, every case healthy or refused clearly.
+// one refused case through `tactip stability --case`, `--set` applied to every case beneath
+// its own keys, the empty contact, and the step that --auto-timestep picks (stable, refused
+// 10 % above, smaller for a stiff skin, the validated step of the shear-DOF skins), and the
+// whole suite through the command (~40 s on 2 cores): exit 0, every case healthy or refused
+// clearly.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -248,6 +249,33 @@ TEST_F(StabilityCliTest, OneHealthyAndOneRefusedCaseWithTheirOutcomes) {
   EXPECT_NE(csv.find("\nsmooth-flat,rail,--skin smooth rail.stimulus=flat,any,healthy,0.002,1,"), std::string::npos)
       << csv;
   EXPECT_NE(csv.find("\ngel-x100,rail,skin.gel_modulus_kpa=10000,any,refused,-,"), std::string::npos) << csv;
+}
+
+TEST_F(StabilityCliTest, SetReachesEveryCaseBeneathItsOwnKeysAndIsCheckedFirst) {
+  // sim.timestep_s=0.001 moves smooth-flat off its 2 ms step; dt-2.5ms sets its own step,
+  // which wins; the table and the CSV say what every case ran with.
+  const CliResult r = Run("stability --case smooth-flat --case dt-2.5ms --set sim.timestep_s=0.001 --quiet --out " +
+                          (dir_ / "out").string());
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.rfind("every case with --set sim.timestep_s=0.001 (after its skin preset, before its own keys)\n", 0),
+            0u)
+      << r.out;
+  const std::string csv = testing::Slurp(dir_ / "out" / "stability.csv");
+  EXPECT_NE(csv.find("\nsmooth-flat,rail,--skin smooth rail.stimulus=flat,any,healthy,0.001,"), std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("\ndt-2.5ms,rail,sim.timestep_s=0.0025 contact.timeconst_s=0.005,held,healthy,0.0025,"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find(",sim.timestep_s=0.001\n"), std::string::npos) << csv;
+  // Refused on the defaults: one line, exit code 2, before any case runs or any folder is made.
+  for (const std::string& bad : {"skin.bogus=1", "skin.gel_modulus_kpa=-1"}) {
+    const CliResult b = Run("stability --case smooth-flat --set " + bad + " --out " + (dir_ / "refused").string());
+    EXPECT_EQ(b.code, 2) << bad;
+    EXPECT_EQ(b.err.rfind("tactip: --set: ", 0), 0u) << b.err;
+    EXPECT_NE(b.err.find("(on the rail scenario's defaults)\n"), std::string::npos) << b.err;
+    EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << b.err;
+    EXPECT_FALSE(fs::exists(dir_ / "refused")) << bad;
+  }
 }
 
 TEST_F(StabilityCliTest, WholeSuiteIsHealthyOrRefusedClearly) {

@@ -20,6 +20,7 @@ namespace {
 // Options of `tactip stability` (owned by the returned closure).
 struct StabilityArgs {
   std::vector<std::string> cases;  // --case NAME (repeatable)
+  std::vector<std::string> sets;   // --set KEY=VALUE (repeatable): every case
   std::string out;                 // --out DIR
   int jobs = 0;
   bool list = false, quiet = false;
@@ -33,7 +34,13 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   }
   StabilityOptions o;
   o.cases = a.cases;
-  for (const auto& n : o.cases) FindStabilityCase(n);  // unknown names before anything runs
+  o.sets = a.sets;
+  std::vector<const StabilityCase*> chosen;  // unknown names and refused --set before anything runs
+  for (const auto& n : o.cases) chosen.push_back(&FindStabilityCase(n));
+  if (o.cases.empty()) {
+    for (const auto& c : StabilityCases()) chosen.push_back(&c);
+  }
+  CheckSuiteSets(o.sets, chosen);
   o.jobs = a.jobs;
   o.stop = stop;
   std::string csv_path;
@@ -45,8 +52,10 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   }
   const size_t total = o.cases.empty() ? StabilityCases().size() : o.cases.size();
   if (!a.quiet) {
-    std::fprintf(stderr, "stability: %zu case(s) on the short protocol (noise off, 15 mm lift, 1 mm/s retraction)\n",
-                 total);
+    std::string with;
+    for (const auto& kv : a.sets) with += " " + kv;
+    std::fprintf(stderr, "stability: %zu case(s) on the short protocol (noise off, 15 mm lift, 1 mm/s retraction)%s%s\n",
+                 total, with.empty() ? "" : ", every case with --set", with.c_str());
     o.progress = [](int done, int n, const StabilityResult& r) {
       std::fprintf(stderr, "[%d/%d] %s: %s (%.1f s)\n", done, n, r.c->name.c_str(), OutcomeName(r.outcome),
                    r.wall_time_s);
@@ -82,6 +91,11 @@ std::function<int()> AddStabilityCommands(CLI::App& app, const std::atomic<bool>
   c->add_option("--case", a->cases, "Run only this case (repeatable); --list shows the names.")
       ->type_name("NAME")
       ->check(NonEmpty("a case name (see --list)"));
+  c->add_option("--set", a->sets,
+                "Override one config key in every case (repeatable): after the case's skin preset, before the case's "
+                "own keys; each must be accepted on the scenario's defaults.")
+      ->type_name("KEY=VALUE")
+      ->check(NonEmpty("e.g. skin.membrane_links=central"));
   c->add_option("--out", a->out, "Also write the table as DIR/stability.csv (the folder is created).")
       ->type_name("DIR")
       ->check(NonEmpty("a folder"));
