@@ -170,19 +170,63 @@ TEST_F(DatasetTest, SummaryReadsAttributesAndFrameCountOnly) {
   EXPECT_TRUE(s.object_height_m.empty());
 }
 
-TEST_F(DatasetTest, FileFollowsTheDocumentedSchema) {
+// One dataset of the documented schema: element type, shape, whole-frame chunks deflated at
+// level 4 (arrays with a pin axis), and a variable-length UTF-8 "units" attribute.
+struct SchemaEntry {
+  const char* path;
+  hid_t type;
+  std::vector<hsize_t> shape;
+  const char* units;
+};
+
+void ExpectDatasetFollowsSchema(hid_t file, const SchemaEntry& e) {
+  SCOPED_TRACE(e.path);
+  const hid_t d = H5Dopen2(file, e.path, H5P_DEFAULT);
+  ASSERT_GE(d, 0);
+  // Element type and shape.
+  const hid_t t = H5Dget_type(d);
+  EXPECT_GT(H5Tequal(t, e.type), 0);
+  H5Tclose(t);
+  const hid_t s = H5Dget_space(d);
+  std::vector<hsize_t> shape(static_cast<size_t>(H5Sget_simple_extent_ndims(s)));
+  H5Sget_simple_extent_dims(s, shape.data(), nullptr);
+  EXPECT_EQ(shape, e.shape);
+  H5Sclose(s);
+  // Layout: pin-axis arrays chunked by whole frames and deflated.
+  const hid_t dcpl = H5Dget_create_plist(d);
+  if (e.shape.size() > 1) {
+    EXPECT_EQ(H5Pget_layout(dcpl), H5D_CHUNKED);
+    std::vector<hsize_t> chunk(e.shape.size());
+    H5Pget_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data());
+    EXPECT_EQ(chunk, e.shape);  // T = 5 < 256
+    unsigned flags = 0;
+    size_t n_values = 1;
+    unsigned level = 0;
+    EXPECT_GE(H5Pget_filter_by_id2(dcpl, H5Z_FILTER_DEFLATE, &flags, &n_values, &level, 0, nullptr, nullptr), 0);
+    EXPECT_EQ(level, 4u);
+  }
+  H5Pclose(dcpl);
+  // "units" is a variable-length UTF-8 string (h5py reads it as str).
+  const hid_t a = H5Aopen(d, "units", H5P_DEFAULT);
+  ASSERT_GE(a, 0);
+  const hid_t at = H5Aget_type(a);
+  EXPECT_GT(H5Tis_variable_str(at), 0);
+  EXPECT_EQ(H5Tget_cset(at), H5T_CSET_UTF8);
+  char* units = nullptr;
+  ASSERT_GE(H5Aread(a, at, &units), 0);
+  EXPECT_STREQ(units, e.units);
+  H5free_memory(units);
+  H5Tclose(at);
+  H5Aclose(a);
+  H5Dclose(d);
+}
+
+TEST_F(DatasetTest, DatasetsHaveTheDocumentedTypesShapesChunksAndUnits) {
   const std::string path = Path("x.h5");
   WriteDataset(path, {MakeRun(2, 5, 3)}, MakeHeader());
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
-
-  struct Expect {
-    const char* path;
-    hid_t type;
-    std::vector<hsize_t> shape;
-    const char* units;
-  };
-  const std::vector<Expect> expected = {
+  const std::vector<SchemaEntry> expected = {
       {"/runs/run_0002/time", H5T_IEEE_F64LE, {5}, "s"},
       {"/runs/run_0002/sensors/tactip/pins/pos_px", H5T_IEEE_F32LE, {5, 3, 2}, "px"},
       {"/runs/run_0002/sensors/tactip/pins/valid", H5T_STD_U8LE, {5, 3}, "1"},
@@ -198,47 +242,15 @@ TEST_F(DatasetTest, FileFollowsTheDocumentedSchema) {
       {"/runs/run_0002/actions/controls", H5T_IEEE_F64LE, {5, 2}, "ctrl"},
       {"/runs/run_0002/actions/time", H5T_IEEE_F64LE, {2}, "s"},
   };
-  for (const auto& e : expected) {
-    SCOPED_TRACE(e.path);
-    const hid_t d = H5Dopen2(file, e.path, H5P_DEFAULT);
-    ASSERT_GE(d, 0);
-    // Element type and shape.
-    const hid_t t = H5Dget_type(d);
-    EXPECT_GT(H5Tequal(t, e.type), 0);
-    H5Tclose(t);
-    const hid_t s = H5Dget_space(d);
-    std::vector<hsize_t> shape(static_cast<size_t>(H5Sget_simple_extent_ndims(s)));
-    H5Sget_simple_extent_dims(s, shape.data(), nullptr);
-    EXPECT_EQ(shape, e.shape);
-    H5Sclose(s);
-    // Layout: pin-axis arrays chunked by whole frames and deflated.
-    const hid_t dcpl = H5Dget_create_plist(d);
-    if (e.shape.size() > 1) {
-      EXPECT_EQ(H5Pget_layout(dcpl), H5D_CHUNKED);
-      std::vector<hsize_t> chunk(e.shape.size());
-      H5Pget_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data());
-      EXPECT_EQ(chunk, e.shape);  // T = 5 < 256
-      unsigned flags = 0;
-      size_t n_values = 1;
-      unsigned level = 0;
-      EXPECT_GE(H5Pget_filter_by_id2(dcpl, H5Z_FILTER_DEFLATE, &flags, &n_values, &level, 0, nullptr, nullptr), 0);
-      EXPECT_EQ(level, 4u);
-    }
-    H5Pclose(dcpl);
-    // "units" is a variable-length UTF-8 string (h5py reads it as str).
-    const hid_t a = H5Aopen(d, "units", H5P_DEFAULT);
-    ASSERT_GE(a, 0);
-    const hid_t at = H5Aget_type(a);
-    EXPECT_GT(H5Tis_variable_str(at), 0);
-    EXPECT_EQ(H5Tget_cset(at), H5T_CSET_UTF8);
-    char* units = nullptr;
-    ASSERT_GE(H5Aread(a, at, &units), 0);
-    EXPECT_STREQ(units, e.units);
-    H5free_memory(units);
-    H5Tclose(at);
-    H5Aclose(a);
-    H5Dclose(d);
-  }
+  for (const auto& e : expected) ExpectDatasetFollowsSchema(file, e);
+  H5Fclose(file);
+}
+
+TEST_F(DatasetTest, AttributesFollowTheDocumentedLayout) {
+  const std::string path = Path("x.h5");
+  WriteDataset(path, {MakeRun(2, 5, 3)}, MakeHeader());
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
   // Root seed is uint64; run attributes are float64.
   const hid_t seed = H5Aopen(file, "seed", H5P_DEFAULT);
   const hid_t seed_type = H5Aget_type(seed);
