@@ -330,6 +330,15 @@ TEST_F(ShardCliTest, MergeRefusesWithOneLineNamingTheFileAndLeavesTheOutputUntou
     EXPECT_EQ(r.err.rfind("tactip: " + c.message, 0), 0u) << c.args << "\n" << r.err;
     EXPECT_EQ(Slurp(kOut), "previous contents") << c.args;
   }
+  EXPECT_TRUE(Slurp(P("b.h5")) == b_before) << "an input is never written";
+  for (const auto& f : Files()) EXPECT_EQ(f.find(".tmp."), std::string::npos) << f << " left behind";
+}
+
+TEST_F(ShardCliTest, MergeRefusesItsOwnInputAsOutputAndMissingArguments) {
+  WriteJobShard(P("a.h5"), 0, 2);
+  WriteJobShard(P("b.h5"), 1, 2);
+  const std::string kOut = P("out.h5");
+  const std::string b_before = Slurp(P("b.h5"));
   // The output must not be an input: refused, input untouched.
   const CliResult self = Run("merge " + P("a.h5") + " " + P("b.h5") + " --out " + P("b.h5"));
   EXPECT_EQ(self.code, 2);
