@@ -12,6 +12,7 @@
 #include <string>
 
 #include "dead_pid.h"
+#include "input_error.h"
 #include "sim/base/errors.h"
 #include "temp_dir.h"
 
@@ -85,14 +86,7 @@ TEST_F(FilesTest, WritableLocationNeedsAFolderThatTakesNewFiles) {
   EXPECT_NO_THROW(CheckWritableLocation(P("ok.h5")));
   EXPECT_FALSE(fs::exists(P("ok.h5")));
   EXPECT_TRUE(fs::is_empty(temp_.path())) << "the probe file is removed";
-  auto message = [](const std::string& path) {
-    try {
-      CheckWritableLocation(path);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  auto message = [](const std::string& path) { return InputErrorOf([&] { CheckWritableLocation(path); }); };
   EXPECT_NE(message(P("missing/x.h5")).find("folder '" + P("missing") + "' does not exist"), std::string::npos);
   Touch("file");
   EXPECT_NE(message(P("file/x.h5")).find("'" + P("file") + "' is not a folder"), std::string::npos);
@@ -106,14 +100,7 @@ TEST_F(FilesTest, OutputFolderIsCreatedWithItsParentsOrRefusedInOneLine) {
   EXPECT_NO_THROW(CreateOutputFolder(P("a/b/c")));
   EXPECT_TRUE(fs::is_directory(P("a/b/c")));
   EXPECT_NO_THROW(CreateOutputFolder(P("a/b/c"))) << "an existing folder is fine";
-  auto message = [](const std::string& dir) {
-    try {
-      CreateOutputFolder(dir);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  auto message = [](const std::string& dir) { return InputErrorOf([&] { CreateOutputFolder(dir); }); };
   Touch("file");
   const std::string on_file = message(P("file"));
   EXPECT_EQ(on_file.rfind("cannot create output folder '" + P("file") + "': ", 0), 0u) << on_file;
