@@ -133,6 +133,7 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   s.alarm_s = alarm.time_s;
   s.alarm_lead_s = fall_s - s.alarm_s;
   s.alarm_pins = LabelAlarmPins(sensor, alarm);
+  s.alarm_sector = MostCommonSector(sensor, retract, alarm.pins);
   // Amplitudes of the slipping pins, where they slip, and the marker agreement.
   s.amplitude_w1_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, 1) : kNaN;
   s.amplitude_w5_px = s.has_phase ? PeakSlippingSpeedPx(sensor, first, end, kSmoothingFrames) : kNaN;

@@ -49,6 +49,9 @@ struct IncipientSignature {
   double alarm_s = 0.0;         ///< first alarm of the detector (params) fed from the retraction start
   double alarm_lead_s = 0.0;    ///< object_fall_s - alarm_s
   AlarmPins alarm_pins;         ///< the labels of the pins that raised that alarm
+  /// The camera's first-moving sector: the sector(s) holding most of the detector's slipping
+  /// set at that alarm (MostCommonSector; "" without an alarm).
+  std::string alarm_sector;
   SectorOrder sectors;          ///< first-slipping sector and the order, within the window
   double tracking_correlation = 0.0;  ///< internal vs external displacements (TrackMarkers)
 };

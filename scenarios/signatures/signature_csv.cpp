@@ -52,6 +52,13 @@ std::string GrossStepCells(const SignatureRun& r) {
   return fmt::format("{},{}", Value(r.gross->step_px), Value(r.gross->after_w5_px));
 }
 
+// The camera's first-moving sector, added last ("n/a" without an incipient signature,
+// "none" without an alarm).
+std::string AlarmSectorCell(const SignatureRun& r) {
+  if (!r.incipient) return kNotApplicable;
+  return r.incipient->alarm_sector.empty() ? "none" : r.incipient->alarm_sector;
+}
+
 }  // namespace
 
 std::string SignatureCsv(const std::vector<SignatureRun>& runs) {
@@ -59,10 +66,12 @@ std::string SignatureCsv(const std::vector<SignatureRun>& runs) {
       "run,speed_mm_s,skin,incipient_onset,noise_px,noise_w5_px,noise_level_px,spike_width_frames,spike_width_pass,"
       "spike_peak_px,spike_peak_w5_px,colinear_onset,colinear_later,contact_lost_s,visible_s,visible_lead_s,"
       "visible_pass,amplitude_w1_px,amplitude_w5_px,alarm_s,alarm_lead_s,alarm_pass,first_sector,sector_order,"
-      "tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free,step_px,after_w5_px\n";
+      "tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free,step_px,after_w5_px,"
+      "alarm_sector\n";
   for (const SignatureRun& r : runs) {
-    out += fmt::format("{},{},{},{},{},{},{}\n", r.run, Value(r.speed_mm_s), r.skin.empty() ? kNotApplicable : r.skin,
-                       r.incipient_onset ? 1 : 0, GrossCells(r), IncipientCells(r), GrossStepCells(r));
+    out += fmt::format("{},{},{},{},{},{},{},{}\n", r.run, Value(r.speed_mm_s), r.skin.empty() ? kNotApplicable : r.skin,
+                       r.incipient_onset ? 1 : 0, GrossCells(r), IncipientCells(r), GrossStepCells(r),
+                       AlarmSectorCell(r));
   }
   return out;
 }

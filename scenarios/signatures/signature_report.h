@@ -63,6 +63,10 @@ struct SignatureAcceptance {
   /// Incipient runs with south before north, and with the hardware's whole order (east
   /// and west, then south, then north); no acceptance threshold, reported beside it.
   int south_before_north = 0, hardware_order = 0;
+  /// Incipient runs whose detector alarmed, and those whose alarm set lies mostly on the
+  /// east and/or west sides (IncipientSignature::alarm_sector): the first-moving sector as
+  /// the camera sees it, which is how the hardware's order was observed. No threshold.
+  int alarmed = 0, east_west_alarm = 0;
 };
 
 /// Counts SignatureAcceptance over `runs`.

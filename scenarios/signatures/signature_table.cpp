@@ -146,12 +146,13 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   }
   const std::string first = s.sectors.first.empty() ? kNone : s.sectors.first;
   const std::string order = s.sectors.order.empty() ? kNone : s.sectors.order;
-  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>9} {:>6}\n",
+  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>5} {:>9} {:>6}\n",
                      r.run, Num(r.speed_mm_s), Num(s.visible_s, "{:.3f}"), Num(s.visible_lead_s, "{:.3f}"),
                      PassCell(s.visible_lead_s >= kAcceptedLeadS), Num(s.sustained_excess_px),
                      phase(s.amplitude_w1_px),
                      phase(s.amplitude_w5_px), Num(s.alarm_s, "{:.3f}"), Num(s.alarm_lead_s, "{:.3f}"),
-                     PassCell(s.alarm_lead_s >= kAcceptedLeadS), AlarmPinsCell(s), s.has_phase ? first : kNotApplicable,
+                     PassCell(s.alarm_lead_s >= kAcceptedLeadS), AlarmPinsCell(s),
+                     s.alarm_sector.empty() ? kNone : s.alarm_sector, s.has_phase ? first : kNotApplicable,
                      s.has_phase ? order : kNotApplicable,
                      s.has_external ? Num(s.tracking_correlation, "{:.3f}") : kNotApplicable);
 }
@@ -176,9 +177,9 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
       "incipient slip: {} of {} runs apply (fingerprint skin, fall or incipient onset); incipient onset in {}; "
       "detector W {}, s_thr {} px, I_thr {}\n",
       a.visible_lead.runs, runs.size(), onsets, params.window, params.speed_thr_px, params.count_thr);
-  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>9} {:>6}\n",
+  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>5} {:>9} {:>6}\n",
                      "run", "speed", "visible_s", "vis_lead", ">=0.5", "excess", "amp_w1", "amp_w5", "alarm_s",
-                     "alarm_ld", ">=0.5", "pins_skf", "first", "order", "corr");
+                     "alarm_ld", ">=0.5", "pins_skf", "a_sec", "first", "order", "corr");
   IncipientColumns c;
   for (const SignatureRun& r : runs) out += IncipientRow(r, c);
   // Summary: each figure's spread beside the hardware's value and the acceptance.
@@ -196,6 +197,9 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
                      fmt::format("E/W first {} of {}, tied with S/N {} ({})", a.east_west_first.passed,
                                  a.east_west_first.runs, a.east_west_tied, SectorResolution(a)),
                      "E and W first, then S, then N", "E/W in most runs: " + Verdict(a.east_west_first));
+  out += SummaryLine("first-moving sector (camera)",
+                     fmt::format("E/W {} of {} alarms (detector's first alarm set)", a.east_west_alarm, a.alarmed),
+                     "E and W first (as observed)");
   out += SummaryLine("sector order",
                      fmt::format("S before N {} of {}; E and W, then S, then N {} of {}", a.south_before_north,
                                  a.east_west_first.runs, a.hardware_order, a.east_west_first.runs),

@@ -74,8 +74,8 @@ size_t SlipGroup(const std::string& order, char sector) {
 
 }  // namespace
 
-bool SectorOrder::EastWestFirst() const {
-  return !first.empty() && first.find_first_of("SN") == std::string::npos;
+bool EastWestOnly(const std::string& sectors) {
+  return !sectors.empty() && sectors.find_first_of("SN") == std::string::npos;
 }
 
 bool SectorOrder::EastWestTiedWithNorthSouth() const {
@@ -98,6 +98,26 @@ char ImageSector(double du_px, double dv_px) {
   if (du_px == 0.0 && dv_px == 0.0) return '-';
   if (std::abs(du_px) >= std::abs(dv_px)) return du_px > 0.0 ? 'E' : 'W';
   return dv_px > 0.0 ? 'S' : 'N';
+}
+
+std::string MostCommonSector(const SensorRecord& sensor, size_t from_frame, const std::vector<int>& pins) {
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  const size_t frames = n == 0 ? 0 : sensor.valid.size() / n;
+  if (pins.empty() || from_frame >= frames) return "";
+  const std::vector<size_t> sectors = PinSectors(sensor, from_frame);
+  std::array<int, kSectors.size()> count{};
+  for (int i : pins) {
+    const size_t k = sectors.at(static_cast<size_t>(i));
+    if (k < kSectors.size()) ++count[k];
+  }
+  const int most = *std::max_element(count.begin(), count.end());
+  std::string out;
+  for (size_t k = 0; k < kSectors.size() && most > 0; ++k) {
+    if (count[k] != most) continue;
+    if (!out.empty()) out += '=';
+    out += kSectors[k];
+  }
+  return out;
 }
 
 SectorOrder OrderSlipSectors(const SensorRecord& sensor, size_t from_frame, size_t end_frame) {

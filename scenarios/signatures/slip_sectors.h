@@ -4,12 +4,16 @@
 // order in which the sectors get their first slipping pin.
 
 #include <string>
+#include <vector>
 
 #include "sensors/dataset.h"
 
 namespace tactip {
 
 struct IncipientWindow;  // scenarios/run_signals.h
+
+/// True when `sectors` ("E", "E=W", "S=W", ...) is not empty and holds east and/or west only.
+bool EastWestOnly(const std::string& sectors);
 
 /// Order of the sectors by their first ground-truth slipping pin.
 struct SectorOrder {
@@ -24,7 +28,7 @@ struct SectorOrder {
   /// false when by the camera frames' labels.
   bool at_steps = false;
   /// True when `first` holds east and/or west only (the hardware's finding).
-  bool EastWestFirst() const;
+  bool EastWestFirst() const { return EastWestOnly(first); }
   /// True when `first` holds east or west together with south or north: they started to
   /// slip in the same frame (or step), so it cannot order them.
   bool EastWestTiedWithNorthSouth() const;
@@ -49,6 +53,12 @@ SectorOrder OrderSlipSectors(const SensorRecord& sensor, size_t from_frame, size
 /// [from_s, end_s), sectors from the pins' image positions at from_frame as above. Needs the
 /// sensor's pin_first_slip_s (std::invalid_argument without it).
 SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_frame, double from_s, double end_s);
+
+/// The sector(s) holding the most of `pins` (pin indices), each pin's sector from its image
+/// position at from_frame as above; a tie joins them by '=' in E, W, S, N order ("E",
+/// "E=S"); "" for no pins. What a camera-side observer calls the first-moving sector when
+/// `pins` is the detector's slipping set at its first alarm.
+std::string MostCommonSector(const SensorRecord& sensor, size_t from_frame, const std::vector<int>& pins);
 
 /// The sectors of `sensor`'s recording in a run's incipient window (IncipientWindowOf): at
 /// step resolution where the sensor has pin_first_slip_s and `by_frame` is false, else by

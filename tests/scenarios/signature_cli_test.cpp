@@ -50,11 +50,14 @@ TEST_F(SignatureCliTest, ReportSignaturesPrintsTheGrossSlipFiguresAndOneCsvRowPe
     EXPECT_EQ(Fields(row), Fields(lines[0])) << row;
     EXPECT_NE(row.find(",2,smooth,0,"), std::string::npos) << row;
     EXPECT_NE(row.find(",n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,"), std::string::npos) << row;
-    // The last two cells: the pattern's step at gross slip (px) and its W5 speed after it.
+    // The last three cells: the pattern's step at gross slip (px), its W5 speed after it, and
+    // the camera's first-moving sector (n/a: no incipient signature on the smooth skin).
     const size_t last = row.rfind(',');
-    const size_t step = row.rfind(',', last - 1);
-    EXPECT_GT(std::stod(row.substr(step + 1, last - step - 1)), 1.0) << row;
-    EXPECT_LT(std::stod(row.substr(last + 1)), 1.0) << row;
+    const size_t after = row.rfind(',', last - 1);
+    const size_t step = row.rfind(',', after - 1);
+    EXPECT_GT(std::stod(row.substr(step + 1, after - step - 1)), 1.0) << row;
+    EXPECT_LT(std::stod(row.substr(after + 1, last - after - 1)), 1.0) << row;
+    EXPECT_EQ(row.substr(last + 1), "n/a") << row;
   }
 }
 

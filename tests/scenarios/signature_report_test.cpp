@@ -137,7 +137,7 @@ TEST(GrossSignatureTest, StepNeedsBothWindowsInTheRecording) {
   EXPECT_TRUE(std::isnan(g->step_px));  // the recording ends at frame 124, before frame 129
   EXPECT_TRUE(std::isnan(g->after_w5_px));
   const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
-  EXPECT_TRUE(SignatureCsv(runs).ends_with(",none,none\n")) << SignatureCsv(runs);
+  EXPECT_TRUE(SignatureCsv(runs).ends_with(",none,none,n/a\n")) << SignatureCsv(runs);
 }
 
 TEST(GrossSignatureTest, SpikeStartsAtTheNextFrameWhenTheOnsetFrameIsStillStatic) {
@@ -284,6 +284,32 @@ TEST(SlipSectorsTest, SouthBeforeNorthAndTheHardwareOrderNeedAStrictlyLaterFrame
   const SectorOrder o = OrderSlipSectors(s, 0, 30);
   EXPECT_EQ(o.order, "E=W<S<N");
   EXPECT_TRUE(o.HardwareOrder());
+}
+
+TEST(SlipSectorsTest, MostCommonSectorOfAnAlarmSetJoinsTiesAndIsEmptyWithoutPins) {
+  // Pins of CompassSensor: 0 centre, 1 east, 2 west, 3 south, 4 north. The sectors come
+  // from the positions at the given frame relative to the contact's centroid.
+  const SensorRecord s = CompassSensor(30);
+  EXPECT_EQ(MostCommonSector(s, 0, {1}), "E");
+  EXPECT_EQ(MostCommonSector(s, 0, {1, 2}), "E=W");
+  EXPECT_EQ(MostCommonSector(s, 0, {2, 3}), "W=S");
+  EXPECT_EQ(MostCommonSector(s, 0, {1, 2, 3, 4}), "E=W=S=N");
+  EXPECT_EQ(MostCommonSector(s, 0, {}), "");
+  EXPECT_EQ(MostCommonSector(s, 30, {1}), "") << "a frame past the recording";
+  EXPECT_TRUE(EastWestOnly("E=W"));
+  EXPECT_TRUE(EastWestOnly("W"));
+  EXPECT_FALSE(EastWestOnly("W=S"));
+  EXPECT_FALSE(EastWestOnly("N"));
+  EXPECT_FALSE(EastWestOnly(""));
+  // Two pins in the south sector outvote one in the east.
+  RunRecord r = StillRun(30, 6, "fingerprint-v2");
+  SensorRecord six = r.sensors[0];
+  const float offsets[6][2] = {{0, 0}, {50, 0}, {-50, 0}, {5, 50}, {-5, 60}, {0, -50}};
+  for (int i = 0; i < 6; ++i) {
+    six.pos_px[i * 2] = 320 + offsets[i][0];
+    six.pos_px[i * 2 + 1] = 240 + offsets[i][1];
+  }
+  EXPECT_EQ(MostCommonSector(six, 0, {1, 3, 4}), "S");
 }
 
 TEST(SlipSectorsTest, ImageSectorIsTheDominantAxisWithVDownBeingSouth) {
@@ -445,7 +471,7 @@ TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
   const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
   const std::string text = FormatSignatureReport(runs, {});
   EXPECT_NE(text.find("alarm pins slip/stuck/free      no alarm"), std::string::npos) << text;
-  EXPECT_NE(SignatureCsv(runs).find(",0.1,none,none,none,n/a,n/a\n"), std::string::npos) << SignatureCsv(runs);
+  EXPECT_NE(SignatureCsv(runs).find(",0.1,none,none,none,n/a,n/a,none\n"), std::string::npos) << SignatureCsv(runs);
   // How far from visible: 0.1 px/frame held, half the threshold.
   EXPECT_NEAR(s->sustained_excess_px, 0.1, kSpeedTol);
 }
@@ -570,12 +596,14 @@ TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
   EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,16.99"), std::string::npos)
       << csv;
   EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free,"
-                     "step_px,after_w5_px\n"),
+                     "step_px,after_w5_px,alarm_sector\n"),
             std::string::npos)
       << csv;
   // The incipient run's excess (its four pins' steady 0.6 px/frame) and its alarm's pins,
   // the last columns, and the summary.
-  EXPECT_NE(csv.find(",E,E,n/a,0.6,4,0,0,n/a,n/a\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",E,E,n/a,0.6,4,0,0,n/a,n/a,E\n"), std::string::npos) << csv;
+  // Its alarm set is the same four pins: the camera's first-moving sector is east too.
+  EXPECT_NE(text.find("first-moving sector (camera)    E/W 1 of 1 alarms"), std::string::npos) << text;
   EXPECT_NE(text.find("pattern step at gross slip, px  17."), std::string::npos) << text;
   EXPECT_NE(text.find("alarm pins slip/stuck/free      4/0/0 of 4 in 1 runs (100 % slip)"), std::string::npos) << text;
   EXPECT_NE(text.find("sustained excess, px/frame      0.60 [0.60, 0.60] (1 of 1 runs)"), std::string::npos) << text;
