@@ -93,28 +93,32 @@ void MakeEmpty(hid_t file, const char* path_in_file, hid_t type, std::vector<hsi
   H5Sclose(space);
 }
 
-TEST_F(DatasetRefusalCliTest, EveryReadingCommandRefusesADamagedDataset) {
+/// One way to damage the two-run dataset, and the refusal every reader gives for it.
+struct Damage {
+  const char* name;
+  std::function<void(hid_t)> edit;
+  std::string message;  // after "dataset '<file>'"
+  bool seen_by_info;    // info reads frame times, not positions
+};
+
+/// Bad frame times, non-finite pin positions and first-slip times, a run without frames, no
+/// runs, a /runs member that is not a run.
+std::vector<Damage> Damages(const RunRecord& run_1) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
-  struct Damage {
-    const char* name;
-    std::function<void(hid_t)> edit;
-    std::string message;     // after "dataset '<file>'"
-    bool seen_by_info;       // info reads frame times, not positions
-  };
-  const Damage damages[] = {
-      {"nan-time", [&](hid_t f) { Overwrite(f, "/runs/run_0001/time", H5T_NATIVE_DOUBLE, std::vector{0.0, 0.01, nan, 0.03}); },
+  return {
+      {"nan-time", [=](hid_t f) { Overwrite(f, "/runs/run_0001/time", H5T_NATIVE_DOUBLE, std::vector{0.0, 0.01, nan, 0.03}); },
        ": run_0001/time is nan at frame 2 (must be a finite number)", true},
       {"swapped-time",
        [](hid_t f) { Overwrite(f, "/runs/run_0001/time", H5T_NATIVE_DOUBLE, std::vector{0.0, 0.02, 0.01, 0.03}); },
        ": run_0001/time is not increasing: frame 2 at 0.01 s is not after frame 1 at 0.02 s", true},
-      {"all-nan-time", [&](hid_t f) { Overwrite(f, "/runs/run_0001/time", H5T_NATIVE_DOUBLE, std::vector(4, nan)); },
+      {"all-nan-time", [=](hid_t f) { Overwrite(f, "/runs/run_0001/time", H5T_NATIVE_DOUBLE, std::vector(4, nan)); },
        ": run_0001/time is nan at frame 0 (must be a finite number)", true},
       {"constant-time", [](hid_t f) { Overwrite(f, "/runs/run_0001/time", H5T_NATIVE_DOUBLE, std::vector(4, 0.5)); },
        ": run_0001/time is not increasing: frame 1 at 0.5 s is not after frame 0 at 0.5 s", true},
       {"inf-position",
-       [&](hid_t f) {
-         std::vector<float> px = FourFrameRun(1).sensors[0].pos_px;
+       [=](hid_t f) {
+         std::vector<float> px = run_1.sensors[0].pos_px;
          px[2 * (2 * 3 + 1)] = -inf;  // frame 3, pin 1, u
          Overwrite(f, "/runs/run_0001/sensors/tactip/pins/pos_px", H5T_NATIVE_FLOAT, px);
        },
@@ -143,7 +147,10 @@ TEST_F(DatasetRefusalCliTest, EveryReadingCommandRefusesADamagedDataset) {
        },
        ": /runs/run_99999999999 is not a run (runs are named run_NNNN, NNNN from 0000 to 2147483647)", true},
   };
-  for (const Damage& d : damages) {
+}
+
+TEST_F(DatasetRefusalCliTest, EveryReadingCommandRefusesADamagedDataset) {
+  for (const Damage& d : Damages(FourFrameRun(1))) {
     const std::string data = P(std::string(d.name) + ".h5");
     WriteDataset(data, d.edit);
     const std::string expected = "tactip: dataset '" + data + "'" + d.message + "\n";
@@ -166,7 +173,9 @@ TEST_F(DatasetRefusalCliTest, EveryReadingCommandRefusesADamagedDataset) {
       EXPECT_FALSE(fs::exists(P("x.model")) || fs::exists(P("x.csv"))) << args;
     }
   }
-  // The undamaged file passes the same readers.
+}
+
+TEST_F(DatasetRefusalCliTest, TheUndamagedDatasetPassesTheSameReaders) {
   WriteDataset(P("good.h5"), [](hid_t) {});
   EXPECT_EQ(Run("info " + P("good.h5")).code, 0);
   const CliResult detect = Run("detect incipient --data " + P("good.h5") + " --out " + P("x.csv"));
