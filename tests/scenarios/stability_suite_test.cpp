@@ -294,6 +294,16 @@ TEST_F(StabilityCliTest, ListNamesEveryCaseAndAnUnknownCaseIsExitCode2) {
   const CliResult u = Run("stability --case nosuch");
   EXPECT_EQ(u.code, 2);
   EXPECT_EQ(u.err, "tactip: --case 'nosuch': unknown case ('tactip stability --list' lists them)\n");
+  // --list runs nothing, so the options that shape a run are refused beside it, not ignored.
+  for (const std::string& extra :
+       std::vector<std::string>{"--set skin.membrane_links=central", "--case gel-x100", "--out " + P("o")}) {
+    const CliResult r = Run("stability --list " + extra);
+    EXPECT_EQ(r.code, 2) << extra;
+    const std::string name = extra.substr(0, extra.find(' '));
+    EXPECT_EQ(r.err, "tactip: " + name + " excludes --list (see --help)\n") << extra;
+    EXPECT_EQ(r.out, "") << extra;
+  }
+  EXPECT_FALSE(fs::exists(P("o")));
 }
 
 TEST_F(StabilityCliTest, EveryRefusalIsOneLineWithExitCode2FromGenerate) {

@@ -88,19 +88,22 @@ std::function<int()> AddStabilityCommands(CLI::App& app, const std::atomic<bool>
       "fast retraction, large steps, tall ridges, deep and empty presses, every stimulus and skin). Each must run "
       "healthy or be refused before it runs with a message naming the parameter and a safe value; exit 1 if any "
       "case fails.");
-  c->add_option("--case", a->cases, "Run only this case (repeatable); --list shows the names.")
+  CLI::Option* only = c->add_option("--case", a->cases, "Run only this case (repeatable); --list shows the names.")
       ->type_name("NAME")
       ->check(NonEmpty("a case name (see --list)"));
-  c->add_option("--set", a->sets,
+  CLI::Option* set = c->add_option("--set", a->sets,
                 "Override one config key in every case (repeatable): after the case's skin preset, before the case's "
                 "own keys; each must be accepted on the scenario's defaults.")
       ->type_name("KEY=VALUE")
       ->check(NonEmpty("e.g. skin.membrane_links=central"));
-  c->add_option("--out", a->out, "Also write the table as DIR/stability.csv (the folder is created).")
+  CLI::Option* out = c->add_option("--out", a->out, "Also write the table as DIR/stability.csv (the folder is created).")
       ->type_name("DIR")
       ->check(NonEmpty("a folder"));
   c->add_option("--jobs", a->jobs, "Cases run at once (default: all cores).")->check(CLI::Range(0, 256));
-  c->add_flag("--list", a->list, "List the cases (name, the outcome Coulomb expects, what each sets) and exit.");
+  c->add_flag("--list", a->list, "List the cases (name, the outcome Coulomb expects, what each sets) and exit.")
+      ->excludes(only)
+      ->excludes(set)
+      ->excludes(out);
   c->add_flag("--quiet", a->quiet, "No per-case progress lines.");
   return [a, c, stop]() -> int { return *c ? RunStability(*a, stop) : -1; };
 }
