@@ -268,7 +268,7 @@ TEST_F(StabilityCliTest, SetReachesEveryCaseBeneathItsOwnKeysAndIsCheckedFirst) 
       << csv;
   EXPECT_NE(csv.find(",sim.timestep_s=0.001\n"), std::string::npos) << csv;
   // Refused on the defaults: one line, exit code 2, before any case runs or any folder is made.
-  for (const std::string& bad : {"skin.bogus=1", "skin.gel_modulus_kpa=-1"}) {
+  for (const std::string bad : {"skin.bogus=1", "skin.gel_modulus_kpa=-1"}) {
     const CliResult b = Run("stability --case smooth-flat --set " + bad + " --out " + (dir_ / "refused").string());
     EXPECT_EQ(b.code, 2) << bad;
     EXPECT_EQ(b.err.rfind("tactip: --set: ", 0), 0u) << b.err;
