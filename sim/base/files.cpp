@@ -113,7 +113,7 @@ void CreateOutputFolder(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("cannot create output folder '" + dir + "': " + ec.message());
-  if (!fs::is_directory(dir, ec)) throw InputError("cannot create output folder '" + dir + "': it is a file");
+  if (!fs::is_directory(dir, ec)) throw InputError("cannot create output folder '" + dir + "': not a folder");
 }
 
 int ReserveFileSpace(const std::string& path, long long size) {

@@ -146,6 +146,8 @@ TEST_F(PlotRunCliTest, BadInputIsRefusedInOneLineWithNothingWritten) {
                 "--out '" + P("rail.h5") + "' is the input dataset FILE: give a folder for the figures", out);
   ExpectRefused("plot " + P("rail.h5") + " --run 0 --out " + P("acrylic.h5"),
                 "--out '" + P("acrylic.h5") + "' is an existing file, not a folder", out);
+  ExpectRefused("plot " + P("rail.h5") + " --run 0 --out " + P("acrylic.h5") + "/figures",
+                "cannot create output folder '" + P("acrylic.h5") + "/figures': Not a directory", out);
   ExpectRefused("plot " + P("rail.h5") + " --run -1 --out " + out, "--run: Value -1 not in range", out);
   ExpectRefused("plot " + P("rail.h5") + " --run 0 --out ''", "--out: empty; give a folder", out);
 }

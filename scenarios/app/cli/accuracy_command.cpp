@@ -73,8 +73,7 @@ int RunAccuracyCommand(const AccuracyArgs& a, const std::atomic<bool>* stop) {
   CheckAccuracyOptions(o);
   NewFolderGuard folder(a.out);
   if (!a.out.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.out, ec);
+    CreateOutputFolder(a.out);
     CheckWritableLocation((std::filesystem::path(a.out) / "accuracy.csv").string());
     if (!a.no_plots) CheckPlotting();
   }

@@ -133,8 +133,7 @@ int RunSpeedStudy(const std::vector<std::string>& scenes, const std::vector<std:
                   const std::string& out_dir, std::uint64_t seed) {
   ChooseSpeedScenes(scenes);  // an unknown scene is named before anything runs
   if (!out_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
+    CreateOutputFolder(out_dir);
     CheckWritableLocation((std::filesystem::path(out_dir) / "speed.csv").string());
   }
   std::fprintf(stderr, "bench --speed: one run per scene on one core, every step timed\n");

@@ -11,8 +11,7 @@ int RunLeanStudy(const std::vector<std::string>& scenes, const LeanOptions& opti
   const std::vector<SpeedScene> chosen = ChooseLeanScenes(scenes);  // an unknown scene is named before anything runs
   const std::string path = out_dir.empty() ? std::string() : (std::filesystem::path(out_dir) / "lean.csv").string();
   if (!path.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
+    CreateOutputFolder(out_dir);
     CheckWritableLocation(path);
   }
   std::fprintf(stderr, "bench --lean: %zu scene(s) x %zu variants, one core, every step timed\n", chosen.size(),

@@ -54,8 +54,7 @@ int RunPlotCommand(const PlotArgs& a) {
   NoteFlaggedRuns(a.dataset, {a.run});
   if (!a.no_plots) CheckPlotting();
   NewFolderGuard folder(a.out);
-  std::error_code ec;
-  std::filesystem::create_directories(a.out, ec);
+  CreateOutputFolder(a.out);
   CheckWritableLocation((std::filesystem::path(a.out) / "events.csv").string());
   WriteRunFigures(run, a.out, !a.no_plots, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
   folder.Keep();
