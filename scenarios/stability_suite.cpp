@@ -6,6 +6,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <string_view>
 #include <thread>
 
 #include <fmt/format.h>
@@ -199,6 +200,15 @@ const StabilityCase& FindStabilityCase(const std::string& name) {
   throw InputError("--case '" + name + "': unknown case ('tactip stability --list' lists them)");
 }
 
+std::vector<const StabilityCase*> ChooseStabilityCases(const std::vector<std::string>& names) {
+  std::vector<const StabilityCase*> chosen;
+  if (names.empty()) {
+    for (const auto& c : StabilityCases()) chosen.push_back(&c);
+  }
+  for (const auto& n : names) chosen.push_back(&FindStabilityCase(n));
+  return chosen;
+}
+
 ConfigSource StabilityCaseSource(const StabilityCase& c, const std::vector<std::string>& sets) {
   ConfigSource src;
   src.overrides = StabilityProtocol();
@@ -251,6 +261,7 @@ void CheckSuiteSets(const std::vector<std::string>& sets, const std::vector<cons
     try {
       FindScenario(name).Check(src);
     } catch (const InputError& e) {
+      if (std::string_view(e.what()).starts_with("--set ")) throw;  // malformed: no scenario's doing
       throw InputError(fmt::format("--set: {} (on the {} scenario's defaults)", e.what(), name));
     }
   }
@@ -306,13 +317,7 @@ StabilityResult RunStabilityCase(const StabilityCase& c, const std::atomic<bool>
 }
 
 std::vector<StabilityResult> RunStabilitySuite(const StabilityOptions& opts) {
-  // The cases to run, in table order.
-  std::vector<const StabilityCase*> todo;
-  if (opts.cases.empty()) {
-    for (const auto& c : StabilityCases()) todo.push_back(&c);
-  } else {
-    for (const auto& n : opts.cases) todo.push_back(&FindStabilityCase(n));
-  }
+  const std::vector<const StabilityCase*> todo = ChooseStabilityCases(opts.cases);
   CheckSuiteSets(opts.sets, todo);
   const int total = static_cast<int>(todo.size());
   const int jobs = std::max(

@@ -42,13 +42,18 @@ const std::vector<std::string>& StabilityProtocol();
 /// The case named `name`; throws InputError listing the known names.
 const StabilityCase& FindStabilityCase(const std::string& name);
 
+/// The cases named in `names`, in that order, or every case in table order when `names` is
+/// empty; throws InputError for an unknown name (FindStabilityCase).
+std::vector<const StabilityCase*> ChooseStabilityCases(const std::vector<std::string>& names);
+
 /// The case's config source: the short protocol, the skin preset, the suite's `sets`
 /// (`tactip stability --set`, applied to every case), then the case's own keys.
 ConfigSource StabilityCaseSource(const StabilityCase& c, const std::vector<std::string>& sets = {});
 
 /// Checks the suite's `sets` before any case runs: each must be accepted by the short
 /// protocol on the defaults of every scenario in `cases`; throws InputError
-/// ("--set: <the scenario's reason>") otherwise.
+/// ("--set: <the scenario's reason> (on the <name> scenario's defaults)") otherwise, or the
+/// config's own "--set '<text>': expected key=value" for a malformed one.
 void CheckSuiteSets(const std::vector<std::string>& sets, const std::vector<const StabilityCase*>& cases);
 
 /// How a case ended.

@@ -35,11 +35,7 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   StabilityOptions o;
   o.cases = a.cases;
   o.sets = a.sets;
-  std::vector<const StabilityCase*> chosen;  // unknown names and refused --set before anything runs
-  for (const auto& n : o.cases) chosen.push_back(&FindStabilityCase(n));
-  if (o.cases.empty()) {
-    for (const auto& c : StabilityCases()) chosen.push_back(&c);
-  }
+  const std::vector<const StabilityCase*> chosen = ChooseStabilityCases(o.cases);  // before anything runs
   CheckSuiteSets(o.sets, chosen);
   o.jobs = a.jobs;
   o.stop = stop;
@@ -50,7 +46,7 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
     csv_path = (std::filesystem::path(a.out) / "stability.csv").string();
     CheckWritableLocation(csv_path);
   }
-  const size_t total = o.cases.empty() ? StabilityCases().size() : o.cases.size();
+  const size_t total = chosen.size();
   if (!a.quiet) {
     std::string with;
     for (const auto& kv : a.sets) with += " " + kv;
@@ -99,11 +95,12 @@ std::function<int()> AddStabilityCommands(CLI::App& app, const std::atomic<bool>
   CLI::Option* out = c->add_option("--out", a->out, "Also write the table as DIR/stability.csv (the folder is created).")
       ->type_name("DIR")
       ->check(NonEmpty("a folder"));
-  c->add_option("--jobs", a->jobs, "Cases run at once (default: all cores).")->check(CLI::Range(0, 256));
+  CLI::Option* jobs = c->add_option("--jobs", a->jobs, "Cases run at once (default: all cores).")->check(CLI::Range(0, 256));
   c->add_flag("--list", a->list, "List the cases (name, the outcome Coulomb expects, what each sets) and exit.")
       ->excludes(only)
       ->excludes(set)
-      ->excludes(out);
+      ->excludes(out)
+      ->excludes(jobs);
   c->add_flag("--quiet", a->quiet, "No per-case progress lines.");
   return [a, c, stop]() -> int { return *c ? RunStability(*a, stop) : -1; };
 }
