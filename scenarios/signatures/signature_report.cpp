@@ -45,7 +45,7 @@ SignatureAcceptance JudgeSignatures(const std::vector<SignatureRun>& runs) {
       if (r.incipient->sectors.at_steps) ++a.sectors_at_steps;
       if (r.incipient->sectors.SouthBeforeNorth()) ++a.south_before_north;
       if (r.incipient->sectors.HardwareOrder()) ++a.hardware_order;
-      if (!r.incipient->alarm_sector.empty()) ++a.alarmed;
+      if (!std::isnan(r.incipient->alarm_s)) ++a.alarmed;
       if (EastWestOnly(r.incipient->alarm_sector)) ++a.east_west_alarm;
     }
   }

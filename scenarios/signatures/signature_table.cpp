@@ -146,7 +146,7 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   }
   const std::string first = s.sectors.first.empty() ? kNone : s.sectors.first;
   const std::string order = s.sectors.order.empty() ? kNone : s.sectors.order;
-  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>5} {:>9} {:>6}\n",
+  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>7} {:>7} {:>9} {:>6}\n",
                      r.run, Num(r.speed_mm_s), Num(s.visible_s, "{:.3f}"), Num(s.visible_lead_s, "{:.3f}"),
                      PassCell(s.visible_lead_s >= kAcceptedLeadS), Num(s.sustained_excess_px),
                      phase(s.amplitude_w1_px),
@@ -177,7 +177,7 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
       "incipient slip: {} of {} runs apply (fingerprint skin, fall or incipient onset); incipient onset in {}; "
       "detector W {}, s_thr {} px, I_thr {}\n",
       a.visible_lead.runs, runs.size(), onsets, params.window, params.speed_thr_px, params.count_thr);
-  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>5} {:>5} {:>9} {:>6}\n",
+  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>7} {:>7} {:>9} {:>6}\n",
                      "run", "speed", "visible_s", "vis_lead", ">=0.5", "excess", "amp_w1", "amp_w5", "alarm_s",
                      "alarm_ld", ">=0.5", "pins_skf", "a_sec", "first", "order", "corr");
   IncipientColumns c;

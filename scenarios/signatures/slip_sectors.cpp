@@ -111,8 +111,9 @@ std::string MostCommonSector(const SensorRecord& sensor, size_t from_frame, cons
     if (k < kSectors.size()) ++count[k];
   }
   const int most = *std::max_element(count.begin(), count.end());
+  if (most == 0) return "-";  // every pin on the centroid: an alarm without a sector
   std::string out;
-  for (size_t k = 0; k < kSectors.size() && most > 0; ++k) {
+  for (size_t k = 0; k < kSectors.size(); ++k) {
     if (count[k] != most) continue;
     if (!out.empty()) out += '=';
     out += kSectors[k];

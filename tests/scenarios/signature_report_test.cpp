@@ -295,6 +295,8 @@ TEST(SlipSectorsTest, MostCommonSectorOfAnAlarmSetJoinsTiesAndIsEmptyWithoutPins
   EXPECT_EQ(MostCommonSector(s, 0, {2, 3}), "W=S");
   EXPECT_EQ(MostCommonSector(s, 0, {1, 2, 3, 4}), "E=W=S=N");
   EXPECT_EQ(MostCommonSector(s, 0, {}), "");
+  EXPECT_EQ(MostCommonSector(s, 0, {0}), "-") << "the centre pin alone: an alarm set without a sector";
+  EXPECT_EQ(MostCommonSector(s, 0, {0, 3}), "S") << "the centre pin does not vote";
   EXPECT_EQ(MostCommonSector(s, 30, {1}), "") << "a frame past the recording";
   EXPECT_TRUE(EastWestOnly("E=W"));
   EXPECT_TRUE(EastWestOnly("W"));
