@@ -6,12 +6,12 @@
 #include <exception>
 #include <limits>
 #include <mutex>
-#include <string_view>
 #include <thread>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "sim/config.h"
 #include "sim/simulation.h"
 
 namespace tactip {
@@ -250,6 +250,7 @@ bool RefusalIsClear(const std::string& message, const std::vector<std::string>& 
 
 void CheckSuiteSets(const std::vector<std::string>& sets, const std::vector<const StabilityCase*>& cases) {
   if (sets.empty()) return;
+  for (const std::string& kv : sets) ParseAssignment(kv);  // malformed: the config's own refusal, no scenario's
   std::vector<std::string> scenarios;
   for (const StabilityCase* c : cases) {
     if (std::find(scenarios.begin(), scenarios.end(), c->scenario) == scenarios.end()) scenarios.push_back(c->scenario);
@@ -261,7 +262,6 @@ void CheckSuiteSets(const std::vector<std::string>& sets, const std::vector<cons
     try {
       FindScenario(name).Check(src);
     } catch (const InputError& e) {
-      if (std::string_view(e.what()).starts_with("--set ")) throw;  // malformed: no scenario's doing
       throw InputError(fmt::format("--set: {} (on the {} scenario's defaults)", e.what(), name));
     }
   }

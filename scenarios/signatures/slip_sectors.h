@@ -56,8 +56,9 @@ SectorOrder OrderSlipSectorsAtSteps(const SensorRecord& sensor, size_t from_fram
 
 /// The sector(s) holding the most of `pins` (pin indices), each pin's sector from its image
 /// position at from_frame as above; a tie joins them by '=' in E, W, S, N order ("E",
-/// "E=S"); "-" when every pin lies on the centroid (no sector); "" for no pins. What a camera-side observer calls the first-moving sector when
-/// `pins` is the detector's slipping set at its first alarm.
+/// "E=S"); "-" when every pin lies on the centroid (no sector); "" for no pins. What a
+/// camera-side observer calls the first-moving sector when `pins` is the detector's slipping
+/// set at its first alarm.
 std::string MostCommonSector(const SensorRecord& sensor, size_t from_frame, const std::vector<int>& pins);
 
 /// The sectors of `sensor`'s recording in a run's incipient window (IncipientWindowOf): at
