@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "scenarios/incipient_signals.h"
@@ -78,6 +79,33 @@ double SustainedExcessPx(const std::vector<double>& excess, const IncipientParam
   return best;
 }
 
+// The best single pin's sustained excess: for each pin, its smoothed speed (window
+// params.window) minus the bulk's (the pins not labelled slipping) on the frames of
+// [first, end) on which it is labelled slipping (NaN on the others and where it has no
+// velocity; a bulk without pins counts 0, as in ExcessSpeedsPx), then SustainedExcessPx
+// of that series; the largest over the pins. NaN if no pin slips params.window
+// consecutive frames.
+double PinSustainedExcessPx(const SensorRecord& sensor, size_t first, size_t end, const IncipientParams& params) {
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  std::vector<std::vector<double>> pin_excess(n);
+  for (size_t f = first; f < end; ++f) {
+    double bulk = kNaN;
+    SlippingSpeedPx(sensor, f, params.window, &bulk);
+    if (std::isnan(bulk)) bulk = 0.0;  // every pin slipping: as ExcessSpeedsPx
+    for (size_t i = 0; i < n; ++i) {
+      const bool slipping = sensor.pin_contact[f * n + i] && sensor.pin_slip[f * n + i];
+      const auto v = slipping ? SmoothedPinVelocityPx(sensor, f, i, params.window) : std::nullopt;
+      pin_excess[i].push_back(v ? std::hypot((*v)[0], (*v)[1]) - bulk : kNaN);
+    }
+  }
+  double best = kNaN;
+  for (const std::vector<double>& series : pin_excess) {
+    const double e = SustainedExcessPx(series, params);
+    if (!std::isnan(e)) best = std::isnan(best) ? e : std::max(best, e);
+  }
+  return best;
+}
+
 // Peak over [first, end) of the slipping pins' mean speed with window w; NaN if none slipped.
 double PeakSlippingSpeedPx(const SensorRecord& sensor, size_t first, size_t end, int w) {
   double peak = kNaN;
@@ -129,6 +157,7 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   s.visible_s = FirstVisibleS(run, excess, first, params);
   s.visible_lead_s = fall_s - s.visible_s;
   s.sustained_excess_px = SustainedExcessPx(excess, params);
+  s.pin_sustained_excess_px = PinSustainedExcessPx(sensor, first, end, params);
   const IncipientAlarm alarm = FirstIncipientAlarm(run, sensor, params, retract);
   s.alarm_s = alarm.time_s;
   s.alarm_lead_s = fall_s - s.alarm_s;

@@ -42,6 +42,11 @@ struct IncipientSignature {
   /// smoothed speed over the bulk's that lasts params.window consecutive frames, px/frame
   /// (visible exactly when it passes params.speed_thr_px); NaN if no pin slips that long.
   double sustained_excess_px = 0.0;
+  /// The same for one pin at a time: the largest, over the pins, of the excess of a pin's
+  /// smoothed speed over the bulk's that lasts params.window consecutive frames on which it
+  /// is labelled slipping, px/frame (NaN if no pin slips that long). Says whether the mean
+  /// over the slipping pins hides a few that the camera would see.
+  double pin_sustained_excess_px = 0.0;
   /// Peak over the window of the labelled-slipping pins' mean speed, unsmoothed (W = 1)
   /// and with a 5-frame moving average (W = 5); NaN without a phase.
   double amplitude_w1_px = 0.0;

@@ -52,11 +52,13 @@ std::string GrossStepCells(const SignatureRun& r) {
   return fmt::format("{},{}", Value(r.gross->step_px), Value(r.gross->after_w5_px));
 }
 
-// The camera's first-moving sector, added last ("n/a" without an incipient signature,
-// "none" without an alarm).
-std::string AlarmSectorCell(const SignatureRun& r) {
-  if (!r.incipient) return kNotApplicable;
-  return r.incipient->alarm_sector.empty() ? "none" : r.incipient->alarm_sector;
+// The camera's first-moving sector and the best pin's sustained excess, added last ("n/a"
+// each without an incipient signature; "none" without an alarm, or without a pin slipping
+// for the detector's window).
+std::string LateIncipientCells(const SignatureRun& r) {
+  if (!r.incipient) return fmt::format("{0},{0}", kNotApplicable);
+  const IncipientSignature& s = *r.incipient;
+  return fmt::format("{},{}", s.alarm_sector.empty() ? "none" : s.alarm_sector, Value(s.pin_sustained_excess_px));
 }
 
 }  // namespace
@@ -67,11 +69,11 @@ std::string SignatureCsv(const std::vector<SignatureRun>& runs) {
       "spike_peak_px,spike_peak_w5_px,colinear_onset,colinear_later,contact_lost_s,visible_s,visible_lead_s,"
       "visible_pass,amplitude_w1_px,amplitude_w5_px,alarm_s,alarm_lead_s,alarm_pass,first_sector,sector_order,"
       "tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free,step_px,after_w5_px,"
-      "alarm_sector\n";
+      "alarm_sector,pin_sustained_excess_px\n";
   for (const SignatureRun& r : runs) {
     out += fmt::format("{},{},{},{},{},{},{},{}\n", r.run, Value(r.speed_mm_s), r.skin.empty() ? kNotApplicable : r.skin,
                        r.incipient_onset ? 1 : 0, GrossCells(r), IncipientCells(r), GrossStepCells(r),
-                       AlarmSectorCell(r));
+                       LateIncipientCells(r));
   }
   return out;
 }

@@ -109,7 +109,7 @@ std::string GrossSection(const std::vector<SignatureRun>& runs, const Acceptance
 
 // The incipient-slip figures of the runs that have them, one vector per figure.
 struct IncipientColumns {
-  std::vector<double> visible_lead, excess, amplitude_w1, amplitude_w5, alarm_lead, correlation;
+  std::vector<double> visible_lead, excess, pin_excess, amplitude_w1, amplitude_w5, alarm_lead, correlation;
   AlarmPins alarm_pins;  // summed over the runs that alarmed
   int alarmed_runs = 0;
 };
@@ -136,6 +136,7 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   auto phase = [&](double v) { return s.has_phase ? Num(v) : std::string(kNotApplicable); };
   c.visible_lead.push_back(s.visible_lead_s);
   if (!std::isnan(s.sustained_excess_px)) c.excess.push_back(s.sustained_excess_px);
+  if (!std::isnan(s.pin_sustained_excess_px)) c.pin_excess.push_back(s.pin_sustained_excess_px);
   c.alarm_lead.push_back(s.alarm_lead_s);
   if (s.has_phase) c.amplitude_w1.push_back(s.amplitude_w1_px);
   if (s.has_phase) c.amplitude_w5.push_back(s.amplitude_w5_px);
@@ -146,9 +147,10 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   }
   const std::string first = s.sectors.first.empty() ? kNone : s.sectors.first;
   const std::string order = s.sectors.order.empty() ? kNone : s.sectors.order;
-  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>7} {:>7} {:>9} {:>6}\n",
+  return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>7} {:>7} {:>9} {:>6}\n",
                      r.run, Num(r.speed_mm_s), Num(s.visible_s, "{:.3f}"), Num(s.visible_lead_s, "{:.3f}"),
                      PassCell(s.visible_lead_s >= kAcceptedLeadS), Num(s.sustained_excess_px),
+                     Num(s.pin_sustained_excess_px),
                      phase(s.amplitude_w1_px),
                      phase(s.amplitude_w5_px), Num(s.alarm_s, "{:.3f}"), Num(s.alarm_lead_s, "{:.3f}"),
                      PassCell(s.alarm_lead_s >= kAcceptedLeadS), AlarmPinsCell(s),
@@ -177,8 +179,8 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
       "incipient slip: {} of {} runs apply (fingerprint skin, fall or incipient onset); incipient onset in {}; "
       "detector W {}, s_thr {} px, I_thr {}\n",
       a.visible_lead.runs, runs.size(), onsets, params.window, params.speed_thr_px, params.count_thr);
-  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>7} {:>7} {:>9} {:>6}\n",
-                     "run", "speed", "visible_s", "vis_lead", ">=0.5", "excess", "amp_w1", "amp_w5", "alarm_s",
+  out += fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>7} {:>7} {:>9} {:>6}\n",
+                     "run", "speed", "visible_s", "vis_lead", ">=0.5", "excess", "pin_ex", "amp_w1", "amp_w5", "alarm_s",
                      "alarm_ld", ">=0.5", "pins_skf", "a_sec", "first", "order", "corr");
   IncipientColumns c;
   for (const SignatureRun& r : runs) out += IncipientRow(r, c);
@@ -187,6 +189,8 @@ std::string IncipientSection(const std::vector<SignatureRun>& runs, const Signat
   out += SummaryLine("visible before the fall, s", Spread(c.visible_lead, "{:.3f}"), ">= 0.5, often seconds",
                      ">= 0.5 s in >= 90 % of runs: " + Verdict(a.visible_lead));
   out += SummaryLine("sustained excess, px/frame", Spread(c.excess),
+                     fmt::format("> {} (s_thr) for {} frames", params.speed_thr_px, params.window));
+  out += SummaryLine("sustained excess, best pin", Spread(c.pin_excess),
                      fmt::format("> {} (s_thr) for {} frames", params.speed_thr_px, params.window));
   out += SummaryLine("amplitude W1, px/frame", Spread(c.amplitude_w1), "~1.0 (noise ~0.5)");
   out += SummaryLine("amplitude W5, px/frame", Spread(c.amplitude_w5), "~0.4 (noise ~0.1)");

@@ -137,7 +137,7 @@ TEST(GrossSignatureTest, StepNeedsBothWindowsInTheRecording) {
   EXPECT_TRUE(std::isnan(g->step_px));  // the recording ends at frame 124, before frame 129
   EXPECT_TRUE(std::isnan(g->after_w5_px));
   const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
-  EXPECT_TRUE(SignatureCsv(runs).ends_with(",none,none,n/a\n")) << SignatureCsv(runs);
+  EXPECT_TRUE(SignatureCsv(runs).ends_with(",none,none,n/a,n/a\n")) << SignatureCsv(runs);
 }
 
 TEST(GrossSignatureTest, SpikeStartsAtTheNextFrameWhenTheOnsetFrameIsStillStatic) {
@@ -473,9 +473,11 @@ TEST(IncipientSignatureTest, SlipTooSlowForTheCameraIsNeverVisible) {
   const std::vector<SignatureRun> runs = {MeasureSignatures(r, r.sensors[0], {})};
   const std::string text = FormatSignatureReport(runs, {});
   EXPECT_NE(text.find("alarm pins slip/stuck/free      no alarm"), std::string::npos) << text;
-  EXPECT_NE(SignatureCsv(runs).find(",0.1,none,none,none,n/a,n/a,none\n"), std::string::npos) << SignatureCsv(runs);
-  // How far from visible: 0.1 px/frame held, half the threshold.
+  EXPECT_NE(SignatureCsv(runs).find(",0.1,none,none,none,n/a,n/a,none,0.1\n"), std::string::npos) << SignatureCsv(runs);
+  // How far from visible: 0.1 px/frame held, half the threshold; the one slipping pin is
+  // also the best pin.
   EXPECT_NEAR(s->sustained_excess_px, 0.1, kSpeedTol);
+  EXPECT_NEAR(s->pin_sustained_excess_px, 0.1, kSpeedTol);
 }
 
 TEST(IncipientSignatureTest, SustainedExcessIsTheBestValueHeldForTheWholeWindow) {
@@ -487,6 +489,7 @@ TEST(IncipientSignatureTest, SustainedExcessIsTheBestValueHeldForTheWholeWindow)
   ASSERT_TRUE(s.has_value());
   EXPECT_NEAR(s->amplitude_w5_px, 1.2, kSpeedTol);
   EXPECT_NEAR(s->sustained_excess_px, 0.8, kSpeedTol);
+  EXPECT_NEAR(s->pin_sustained_excess_px, 0.8, kSpeedTol);
   EXPECT_NEAR(s->visible_s, 70 * kFrameS, kTimeTol);
   // Slipping on fewer consecutive frames than the window: no window to judge.
   RunRecord brief = PinZeroSlipsRun(70, 74);
@@ -494,7 +497,29 @@ TEST(IncipientSignatureTest, SustainedExcessIsTheBestValueHeldForTheWholeWindow)
   s = MeasureIncipientSignature(brief, brief.sensors[0]);
   ASSERT_TRUE(s.has_value());
   EXPECT_TRUE(std::isnan(s->sustained_excess_px));
+  EXPECT_TRUE(std::isnan(s->pin_sustained_excess_px));
   EXPECT_TRUE(std::isnan(s->visible_s));
+}
+
+TEST(IncipientSignatureTest, BestPinExcessSeesTheOneFastSlippingPinThatTheMeanHides) {
+  // Pins 0-3 labelled slipping from frame 60; only pin 0 moves (0.6 px/frame). The slipping
+  // pins' mean excess over the still bulk is 0.15, under s_thr: not visible; pin 0's is 0.6.
+  RunRecord r = PinZeroSlipsRun(60, 160);
+  for (int i = 1; i < 4; ++i) {
+    for (int f = 60; f < 160; ++f) r.sensors[0].pin_slip[f * 20 + i] = 1;
+  }
+  MovePin(r.sensors[0], 0, 60, 145, 0.6, 0.0);
+  const auto s = MeasureIncipientSignature(r, r.sensors[0]);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->sustained_excess_px, 0.15, kSpeedTol);
+  EXPECT_TRUE(std::isnan(s->visible_s));
+  EXPECT_NEAR(s->pin_sustained_excess_px, 0.6, kSpeedTol);
+  // A pin moving while it is not labelled slipping does not count: pin 5 (stuck) at 1 px/frame.
+  MovePin(r.sensors[0], 5, 60, 145, 1.0, 0.0);
+  const auto stuck = MeasureIncipientSignature(r, r.sensors[0]);
+  ASSERT_TRUE(stuck.has_value());
+  EXPECT_LT(stuck->pin_sustained_excess_px, 0.6) << "the stuck pin raised the bulk, not the best pin";
+  EXPECT_GT(stuck->pin_sustained_excess_px, 0.5);
 }
 
 TEST(IncipientSignatureTest, SmoothSkinAndRunsWithoutFallOrOnsetHaveNoIncipientSignature) {
@@ -598,17 +623,19 @@ TEST(SignatureReportTest, FiguresThatDoNotApplyPrintNotApplicableNotZero) {
   EXPECT_NE(gross_row.find(",0.124,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a,16.99"), std::string::npos)
       << csv;
   EXPECT_NE(csv.find(",tracking_correlation,sustained_excess_px,alarm_pins_slipping,alarm_pins_stuck,alarm_pins_free,"
-                     "step_px,after_w5_px,alarm_sector\n"),
+                     "step_px,after_w5_px,alarm_sector,pin_sustained_excess_px\n"),
             std::string::npos)
       << csv;
   // The incipient run's excess (its four pins' steady 0.6 px/frame) and its alarm's pins,
   // the last columns, and the summary.
-  EXPECT_NE(csv.find(",E,E,n/a,0.6,4,0,0,n/a,n/a,E\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",E,E,n/a,0.6,4,0,0,n/a,n/a,E,0.6\n"), std::string::npos) << csv;
+  EXPECT_EQ(gross_row.substr(gross_row.size() - 9), ",n/a,n/a\n") << csv;
   // Its alarm set is the same four pins: the camera's first-moving sector is east too.
   EXPECT_NE(text.find("first-moving sector (camera)    E/W 1 of 1 alarms"), std::string::npos) << text;
   EXPECT_NE(text.find("pattern step at gross slip, px  17."), std::string::npos) << text;
   EXPECT_NE(text.find("alarm pins slip/stuck/free      4/0/0 of 4 in 1 runs (100 % slip)"), std::string::npos) << text;
   EXPECT_NE(text.find("sustained excess, px/frame      0.60 [0.60, 0.60] (1 of 1 runs)"), std::string::npos) << text;
+  EXPECT_NE(text.find("sustained excess, best pin      0.60 [0.60, 0.60] (1 of 1 runs)"), std::string::npos) << text;
 }
 
 TEST(SignatureReportTest, DatasetWithoutOnsetsSaysSoForBothSections) {
