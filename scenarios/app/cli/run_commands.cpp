@@ -26,6 +26,34 @@ namespace {
 // Where `tactip bench` leaves its RBF SVM with its default --out.
 constexpr const char* kBenchDefaultModel = "bench-results/svm-rbf.model";
 
+// The options both closed-loop commands take: how many trials, their seed, the cores, the
+// output folder and the progress lines.
+struct TrialArgs {
+  int trials = 20;
+  unsigned long long seed = 1;
+  int jobs = 0;
+  std::string out;   // --out DIR
+  bool quiet = false;
+};
+
+// Registers TrialArgs' options on `c`; the help texts say what differs between the commands.
+void AddTrialOptions(CLI::App* c, TrialArgs& t, const std::string& trials_help, const std::string& seed_help,
+                     const std::string& out_help) {
+  c->add_option("--trials", t.trials, trials_help)->check(CLI::Range(1, 10000));
+  AddSeedOption(c, t.seed, seed_help);
+  c->add_option("--jobs", t.jobs, "Trials run at once (default: all cores).")->check(CLI::Range(0, 256));
+  c->add_option("--out", t.out, out_help)->type_name("DIR")->check(NonEmpty("a folder"));
+  c->add_flag("--quiet", t.quiet, "No per-trial progress lines.");
+}
+
+// Creates the output folder `out` (none when empty) before the first trial and checks that
+// trials.csv can be written into it (the caller's NewFolderGuard removes it on failure).
+void PrepareTrialFolder(const std::string& out) {
+  if (out.empty()) return;
+  CreateOutputFolder(out);
+  CheckWritableLocation((std::filesystem::path(out) / "trials.csv").string());
+}
+
 // Options of `tactip run rail-catch` (owned by the returned closure).
 struct CatchArgs {
   ConfigArgs config;                  // --config, --set, --skin (the rail scenario's config)
@@ -33,11 +61,7 @@ struct CatchArgs {
   CatchOptions loop;                  // --response, latencies, catch speed, hold
   std::string speeds = "1";           // --speed-mm-s LIST
   std::string stimuli = "flat";       // --stimulus LIST
-  int trials = 20;
-  unsigned long long seed = 1;
-  int jobs = 0;
-  std::string out;                    // --out DIR
-  bool quiet = false;
+  TrialArgs trial;                    // --trials, --seed, --jobs, --out, --quiet
 };
 
 // "a,b,c" -> its non-empty items; throws InputError naming `option` for an empty item.
@@ -104,20 +128,17 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
     for (double v : speeds) rows.push_back(RowConfig(a, s, v));
   }
   for (const RailScenarioConfig& row : rows) a.loop.ValidateFor(row.rail);
-  NewFolderGuard folder(a.out);
-  if (!a.out.empty()) {
-    CreateOutputFolder(a.out);
-    CheckWritableLocation((std::filesystem::path(a.out) / "trials.csv").string());
-  }
+  NewFolderGuard folder(a.trial.out);
+  PrepareTrialFolder(a.trial.out);
   // The trials, row by row, with a progress line per trial.
   CatchTrialOptions o;
   o.model_path = model;
   o.loop = a.loop;
-  o.trials = a.trials;
-  o.seed = a.seed;
-  o.jobs = a.jobs;
+  o.trials = a.trial.trials;
+  o.seed = a.trial.seed;
+  o.jobs = a.trial.jobs;
   o.stop = stop;
-  if (!a.quiet) {
+  if (!a.trial.quiet) {
     o.progress = [](const CatchTrial& t) {
       std::fprintf(stderr, "%s %g mm/s trial %d: %s, slip %.1f mm, declared %s s after onset %s s\n",
                    t.stimulus.c_str(), t.speed_mm_s, t.trial, ToString(t.outcome).c_str(), t.slip_distance_mm,
@@ -137,7 +158,7 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
   std::printf("rail catch: model %s, response %s, latency %g ms classify + %g ms arm, catch at %g mm/s\n%s",
               model.c_str(), a.loop.response.c_str(), a.loop.classify_ms, a.loop.arm_response_ms,
               a.loop.catch_speed_mm_s, table.c_str());
-  WriteTrialOutputs(a.out, {{"trials.csv", CatchTrialsCsv(trials)}, {"summary.csv", CatchSummaryCsv(summary)},
+  WriteTrialOutputs(a.trial.out, {{"trials.csv", CatchTrialsCsv(trials)}, {"summary.csv", CatchSummaryCsv(summary)},
                            {"summary.txt", table}},
                     trials.size(), wall);
   folder.Keep();
@@ -175,13 +196,9 @@ CLI::App* AddRailCatch(CLI::App* run, CatchArgs& a) {
   c->add_option("--stimulus", a.stimuli, "Stimuli, comma-separated, or all (default flat).")
       ->type_name("LIST")
       ->check(NonEmpty("e.g. flat,curved40 or all"));
-  c->add_option("--trials", a.trials, "Trials per stimulus and speed (default 20).")->check(CLI::Range(1, 10000));
-  AddSeedOption(c, a.seed, "Seed: trial i is rail run i of this seed (default 1).");
-  c->add_option("--jobs", a.jobs, "Trials run at once (default: all cores).")->check(CLI::Range(0, 256));
-  c->add_option("--out", a.out, "Write trials.csv, summary.csv and summary.txt into DIR (created).")
-      ->type_name("DIR")
-      ->check(NonEmpty("a folder"));
-  c->add_flag("--quiet", a.quiet, "No per-trial progress lines.");
+  AddTrialOptions(c, a.trial, "Trials per stimulus and speed (default 20).",
+                  "Seed: trial i is rail run i of this seed (default 1).",
+                  "Write trials.csv, summary.csv and summary.txt into DIR (created).");
   return c;
 }
 
@@ -189,29 +206,22 @@ CLI::App* AddRailCatch(CLI::App* run, CatchArgs& a) {
 struct StopArgs {
   ConfigArgs config;   // --config, --set, --skin, --speed-mm-s (the incipient scenario's config)
   StopOptions loop;    // steps, pause, hold, markers, detector
-  int trials = 20;
-  unsigned long long seed = 1;
-  int jobs = 0;
-  std::string out;     // --out DIR
-  bool quiet = false;
+  TrialArgs trial;     // --trials, --seed, --jobs, --out, --quiet
 };
 
 int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
   // Everything checked before the first trial: loop, config, output folder.
   a.loop.Validate();
   const RailScenarioConfig cfg = RailFamily(FindScenario("incipient")).Load(a.config.Source());
-  NewFolderGuard folder(a.out);
-  if (!a.out.empty()) {
-    CreateOutputFolder(a.out);
-    CheckWritableLocation((std::filesystem::path(a.out) / "trials.csv").string());
-  }
+  NewFolderGuard folder(a.trial.out);
+  PrepareTrialFolder(a.trial.out);
   StopTrialOptions o;
   o.loop = a.loop;
-  o.trials = a.trials;
-  o.seed = a.seed;
-  o.jobs = a.jobs;
+  o.trials = a.trial.trials;
+  o.seed = a.trial.seed;
+  o.jobs = a.trial.jobs;
   o.stop = stop;
-  if (!a.quiet) {
+  if (!a.trial.quiet) {
     o.progress = [](const StopTrial& t) {
       std::fprintf(stderr, "%s trial %d: %s, stop %s s, gross onset %s s, fall %s s\n", t.skin.c_str(), t.trial,
                    ToString(t.outcome).c_str(), Fmt(t.stop_s).c_str(), Fmt(t.onset_s).c_str(), Fmt(t.fall_s).c_str());
@@ -225,7 +235,7 @@ int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
               cfg.rail.stimulus.c_str(), a.loop.step_mm, cfg.rail.retract_speed_mm_s, a.loop.pause_s,
               a.loop.markers.c_str(), a.loop.detector.window, a.loop.detector.speed_thr_px, a.loop.detector.count_thr,
               table.c_str());
-  WriteTrialOutputs(a.out, {{"trials.csv", StopTrialsCsv(trials)}, {"summary.txt", table}}, trials.size(), wall);
+  WriteTrialOutputs(a.trial.out, {{"trials.csv", StopTrialsCsv(trials)}, {"summary.txt", table}}, trials.size(), wall);
   folder.Keep();
   return 0;
 }
@@ -251,13 +261,8 @@ CLI::App* AddIncipientStop(CLI::App* run, StopArgs& a) {
   c->add_option("--speed-thr-px", a.loop.detector.speed_thr_px, "Detector s_thr, px/frame (default 0.2).")
       ->check(FiniteNumber());
   c->add_option("--count-thr", a.loop.detector.count_thr, "Detector I_thr: pins (default 4).");
-  c->add_option("--trials", a.trials, "Trials (default 20).")->check(CLI::Range(1, 10000));
-  AddSeedOption(c, a.seed, "Seed: trial i is run i of this seed (default 1).");
-  c->add_option("--jobs", a.jobs, "Trials run at once (default: all cores).")->check(CLI::Range(0, 256));
-  c->add_option("--out", a.out, "Write trials.csv and summary.txt into DIR (created).")
-      ->type_name("DIR")
-      ->check(NonEmpty("a folder"));
-  c->add_flag("--quiet", a.quiet, "No per-trial progress lines.");
+  AddTrialOptions(c, a.trial, "Trials (default 20).", "Seed: trial i is run i of this seed (default 1).",
+                  "Write trials.csv and summary.txt into DIR (created).");
   return c;
 }
 
