@@ -91,7 +91,7 @@ double PinSustainedExcessPx(const SensorRecord& sensor, size_t first, size_t end
   for (size_t f = first; f < end; ++f) {
     double bulk = kNaN;
     SlippingSpeedPx(sensor, f, params.window, &bulk);
-    if (std::isnan(bulk)) bulk = 0.0;  // every pin slipping: as ExcessSpeedsPx
+    if (std::isnan(bulk)) bulk = 0.0;  // no other pin with a velocity: as ExcessSpeedsPx
     for (size_t i = 0; i < n; ++i) {
       const bool slipping = sensor.pin_contact[f * n + i] && sensor.pin_slip[f * n + i];
       const auto v = slipping ? SmoothedPinVelocityPx(sensor, f, i, params.window) : std::nullopt;

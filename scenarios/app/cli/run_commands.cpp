@@ -158,8 +158,9 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
   std::printf("rail catch: model %s, response %s, latency %g ms classify + %g ms arm, catch at %g mm/s\n%s",
               model.c_str(), a.loop.response.c_str(), a.loop.classify_ms, a.loop.arm_response_ms,
               a.loop.catch_speed_mm_s, table.c_str());
-  WriteTrialOutputs(a.trial.out, {{"trials.csv", CatchTrialsCsv(trials)}, {"summary.csv", CatchSummaryCsv(summary)},
-                           {"summary.txt", table}},
+  WriteTrialOutputs(a.trial.out,
+                    {{"trials.csv", CatchTrialsCsv(trials)}, {"summary.csv", CatchSummaryCsv(summary)},
+                     {"summary.txt", table}},
                     trials.size(), wall);
   folder.Keep();
   return 0;
