@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <optional>
 #include <vector>
 
 #include "scenarios/incipient_signals.h"
@@ -17,17 +16,27 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Whether pin i is labelled slipping (in contact and sliding) at frame f.
+bool LabelledSlipping(const SensorRecord& sensor, size_t f, size_t i) {
+  const size_t k = f * static_cast<size_t>(sensor.n_pins) + i;
+  return sensor.pin_contact[k] && sensor.pin_slip[k];
+}
+
 // Mean smoothed speed (window w) of the labelled-slipping pins at frame f and, when
-// `bulk` is given, of the others; NaN where a group has no pin with a velocity.
-double SlippingSpeedPx(const SensorRecord& sensor, size_t f, int w, double* bulk = nullptr) {
+// `bulk` is given, of the others; NaN where a group has no pin with a velocity. When
+// `speeds` is given it receives each pin's smoothed speed (NaN without a velocity).
+double SlippingSpeedPx(const SensorRecord& sensor, size_t f, int w, double* bulk = nullptr,
+                       std::vector<double>* speeds = nullptr) {
   const auto n = static_cast<size_t>(sensor.n_pins);
+  if (speeds) speeds->assign(n, kNaN);
   double slip_sum = 0.0, rest_sum = 0.0;
   int slip_count = 0, rest_count = 0;
   for (size_t i = 0; i < n; ++i) {
     const auto v = SmoothedPinVelocityPx(sensor, f, i, w);
     if (!v) continue;
     const double speed = std::hypot((*v)[0], (*v)[1]);
-    if (sensor.pin_contact[f * n + i] && sensor.pin_slip[f * n + i]) {
+    if (speeds) (*speeds)[i] = speed;
+    if (LabelledSlipping(sensor, f, i)) {
       slip_sum += speed;
       ++slip_count;
     } else {
@@ -39,14 +48,28 @@ double SlippingSpeedPx(const SensorRecord& sensor, size_t f, int w, double* bulk
   return slip_count > 0 ? slip_sum / slip_count : kNaN;
 }
 
-// Per frame f in [first, end): the slipping pins' smoothed speed (window params.window)
-// minus the bulk's; NaN where no pin is labelled slipping.
-std::vector<double> ExcessSpeedsPx(const SensorRecord& sensor, size_t first, size_t end, const IncipientParams& params) {
-  std::vector<double> excess;
+// The slipping pins' smoothed speed (window params.window) minus the bulk's, per frame f in
+// [first, end) (element f - first): `mean` over the labelled-slipping pins (NaN where none
+// is), `per_pin[i]` for pin i alone (NaN on the frames it is not labelled slipping or has
+// no velocity). A bulk without a pin with a velocity counts 0.
+struct ExcessSpeeds {
+  std::vector<double> mean;
+  std::vector<std::vector<double>> per_pin;
+};
+
+ExcessSpeeds ExcessSpeedsPx(const SensorRecord& sensor, size_t first, size_t end, const IncipientParams& params) {
+  const auto n = static_cast<size_t>(sensor.n_pins);
+  ExcessSpeeds excess;
+  excess.per_pin.resize(n);
+  std::vector<double> speeds;
   for (size_t f = first; f < end; ++f) {
     double bulk = kNaN;
-    const double slipping = SlippingSpeedPx(sensor, f, params.window, &bulk);
-    excess.push_back(slipping - (std::isnan(bulk) ? 0.0 : bulk));
+    const double slipping = SlippingSpeedPx(sensor, f, params.window, &bulk, &speeds);
+    if (std::isnan(bulk)) bulk = 0.0;
+    excess.mean.push_back(slipping - bulk);
+    for (size_t i = 0; i < n; ++i) {
+      excess.per_pin[i].push_back(LabelledSlipping(sensor, f, i) ? speeds[i] - bulk : kNaN);
+    }
   }
   return excess;
 }
@@ -79,27 +102,12 @@ double SustainedExcessPx(const std::vector<double>& excess, const IncipientParam
   return best;
 }
 
-// The best single pin's sustained excess: for each pin, its smoothed speed (window
-// params.window) minus the bulk's (the pins not labelled slipping) on the frames of
-// [first, end) on which it is labelled slipping (NaN on the others and where it has no
-// velocity; a bulk without pins counts 0, as in ExcessSpeedsPx), then SustainedExcessPx
-// of that series; the largest over the pins. NaN if no pin slips params.window
+// The best single pin's sustained excess: the largest SustainedExcessPx over the pins'
+// own excess series (ExcessSpeeds::per_pin); NaN if no pin slips params.window
 // consecutive frames.
-double PinSustainedExcessPx(const SensorRecord& sensor, size_t first, size_t end, const IncipientParams& params) {
-  const auto n = static_cast<size_t>(sensor.n_pins);
-  std::vector<std::vector<double>> pin_excess(n);
-  for (size_t f = first; f < end; ++f) {
-    double bulk = kNaN;
-    SlippingSpeedPx(sensor, f, params.window, &bulk);
-    if (std::isnan(bulk)) bulk = 0.0;  // no other pin with a velocity: as ExcessSpeedsPx
-    for (size_t i = 0; i < n; ++i) {
-      const bool slipping = sensor.pin_contact[f * n + i] && sensor.pin_slip[f * n + i];
-      const auto v = slipping ? SmoothedPinVelocityPx(sensor, f, i, params.window) : std::nullopt;
-      pin_excess[i].push_back(v ? std::hypot((*v)[0], (*v)[1]) - bulk : kNaN);
-    }
-  }
+double PinSustainedExcessPx(const ExcessSpeeds& excess, const IncipientParams& params) {
   double best = kNaN;
-  for (const std::vector<double>& series : pin_excess) {
+  for (const std::vector<double>& series : excess.per_pin) {
     const double e = SustainedExcessPx(series, params);
     if (!std::isnan(e)) best = std::isnan(best) ? e : std::max(best, e);
   }
@@ -153,11 +161,11 @@ std::optional<IncipientSignature> MeasureIncipientSignature(const RunRecord& run
   s.has_phase = !std::isnan(onset_s);
   s.has_external = !sensor.external_m.empty();
   // Camera visibility and the detector, both measured against the fall.
-  const std::vector<double> excess = ExcessSpeedsPx(sensor, first, end, params);
-  s.visible_s = FirstVisibleS(run, excess, first, params);
+  const ExcessSpeeds excess = ExcessSpeedsPx(sensor, first, end, params);
+  s.visible_s = FirstVisibleS(run, excess.mean, first, params);
   s.visible_lead_s = fall_s - s.visible_s;
-  s.sustained_excess_px = SustainedExcessPx(excess, params);
-  s.pin_sustained_excess_px = PinSustainedExcessPx(sensor, first, end, params);
+  s.sustained_excess_px = SustainedExcessPx(excess.mean, params);
+  s.pin_sustained_excess_px = PinSustainedExcessPx(excess, params);
   const IncipientAlarm alarm = FirstIncipientAlarm(run, sensor, params, retract);
   s.alarm_s = alarm.time_s;
   s.alarm_lead_s = fall_s - s.alarm_s;
