@@ -72,11 +72,8 @@ int RunAccuracyCommand(const AccuracyArgs& a, const std::atomic<bool>* stop) {
   }
   CheckAccuracyOptions(o);
   NewFolderGuard folder(a.out);
-  if (!a.out.empty()) {
-    CreateOutputFolder(a.out);
-    CheckWritableLocation((std::filesystem::path(a.out) / "accuracy.csv").string());
-    if (!a.no_plots) CheckPlotting();
-  }
+  PrepareOutputFolder(a.out, "accuracy.csv");
+  if (!a.out.empty() && !a.no_plots) CheckPlotting();
   if (!a.quiet) {
     o.progress = [](int done, int total, const AccuracyRow& row) {
       std::fprintf(stderr, "[%d/%d] %s: %s (%.3f s wall per simulated s)\n", done, total, row.setting.label.c_str(),

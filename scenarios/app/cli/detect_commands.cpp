@@ -132,10 +132,7 @@ std::unique_ptr<Detector> WithResponse(std::unique_ptr<Detector> det, const std:
 int RunSpeedStudy(const std::vector<std::string>& scenes, const std::vector<std::string>& sets,
                   const std::string& out_dir, std::uint64_t seed) {
   ChooseSpeedScenes(scenes);  // an unknown scene is named before anything runs
-  if (!out_dir.empty()) {
-    CreateOutputFolder(out_dir);
-    CheckWritableLocation((std::filesystem::path(out_dir) / "speed.csv").string());
-  }
+  PrepareOutputFolder(out_dir, "speed.csv");
   std::fprintf(stderr, "bench --speed: one run per scene on one core, every step timed\n");
   const std::vector<SpeedRow> rows = MeasureSpeed(scenes, sets, seed);
   std::printf("%s", FormatSpeedTable(rows).c_str());

@@ -50,6 +50,12 @@ NewFolderGuard::NewFolderGuard(const std::string& dir) {
   created_ = p;
 }
 
+void PrepareOutputFolder(const std::string& dir, const std::string& file) {
+  if (dir.empty()) return;
+  CreateOutputFolder(dir);
+  CheckWritableLocation((std::filesystem::path(dir) / file).string());
+}
+
 NewFolderGuard::~NewFolderGuard() {
   if (created_.empty()) return;
   // Innermost first; a folder holding anything stops the walk (remove fails on it).

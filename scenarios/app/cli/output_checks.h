@@ -22,6 +22,11 @@ void CheckOutputsAreNotInputs(const std::vector<NamedPath>& outputs, const std::
 std::vector<NamedPath> FilesInFolder(const std::string& option, const std::string& dir,
                                      const std::vector<std::string>& names);
 
+/// Before a long command starts: creates the output folder `dir` (nothing when `dir` is
+/// empty) and checks that its first output file `file` can be written in it; throws
+/// InputError naming the folder or file otherwise. Construct the NewFolderGuard first.
+void PrepareOutputFolder(const std::string& dir, const std::string& file);
+
 /// Remembers which part of the output folder `dir` does not exist yet; unless Keep() is
 /// called, removes the folders of that part that are still empty when destroyed, so a
 /// command that fails or is interrupted before writing anything leaves no folder behind

@@ -46,14 +46,6 @@ void AddTrialOptions(CLI::App* c, TrialArgs& t, const std::string& trials_help, 
   c->add_flag("--quiet", t.quiet, "No per-trial progress lines.");
 }
 
-// Creates the output folder `out` (none when empty) before the first trial and checks that
-// trials.csv can be written into it (the caller's NewFolderGuard removes it on failure).
-void PrepareTrialFolder(const std::string& out) {
-  if (out.empty()) return;
-  CreateOutputFolder(out);
-  CheckWritableLocation((std::filesystem::path(out) / "trials.csv").string());
-}
-
 // Options of `tactip run rail-catch` (owned by the returned closure).
 struct CatchArgs {
   ConfigArgs config;                  // --config, --set, --skin (the rail scenario's config)
@@ -129,7 +121,7 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
   }
   for (const RailScenarioConfig& row : rows) a.loop.ValidateFor(row.rail);
   NewFolderGuard folder(a.trial.out);
-  PrepareTrialFolder(a.trial.out);
+  PrepareOutputFolder(a.trial.out, "trials.csv");
   // The trials, row by row, with a progress line per trial.
   CatchTrialOptions o;
   o.model_path = model;
@@ -215,7 +207,7 @@ int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
   a.loop.Validate();
   const RailScenarioConfig cfg = RailFamily(FindScenario("incipient")).Load(a.config.Source());
   NewFolderGuard folder(a.trial.out);
-  PrepareTrialFolder(a.trial.out);
+  PrepareOutputFolder(a.trial.out, "trials.csv");
   StopTrialOptions o;
   o.loop = a.loop;
   o.trials = a.trial.trials;
