@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "models/membrane_elements.h"
 #include "models/ridge_rocking.h"
 #include "models/rim_anchor.h"
 #include "sim/pressing_axis.h"
@@ -108,6 +109,10 @@ void SkinConfig::ValidateRules() const {
   if (pattern == "fingerprint-v2" && pin_length_mm > ridge_height_mm + thickness_mm) {
     FailRule("skin.pin_length_mm", pin_length_mm,
              "fingerprint-v2 pins run from the wave peak through the skin: must be <= ridge_height_mm + thickness_mm");
+  }
+  if (membrane_links == "orthotropic" && coupling == "membrane" && !Fingerprint()) {
+    FailRule("skin.membrane_links", membrane_links,
+             "the orthotropic membrane is the concentric ridges' corrugated sheet: needs a fingerprint pattern");
   }
   if (contact_radius_mm >= radius_mm) {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
@@ -286,12 +291,15 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   // Skin plate bending: D / a^2 couples neighbouring pins' normal displacements.
   m.k_bend_N_m = D / (a * a);
   m.membrane_N_m = E_skin * t;
+  m.corrugation = Corrugation::Of(skin);
+  m.dome_radius_m = R;
   // Per-pin shear DOFs: the contact point rides on the gel in series with the ridge.
   m.k_tip_N_m = m.k_rock_N_m > 0.0 ? Series(m.k_shear_N_m, m.k_rock_N_m) : m.k_shear_N_m;
   // A triangular spring network with springs k has a 2-D Young's modulus 2k / sqrt 3.
   m.k_link_N_m = std::sqrt(3.0) / 2.0 * m.membrane_N_m;
   m.k_couple_N_m = m.k_rock_N_m > 0.0 ? 1.0 / (1.0 / m.k_link_N_m + 2.0 / m.k_rock_N_m) : m.k_link_N_m;
   m.central_links = skin.coupling == "membrane" && skin.membrane_links == "central";
+  m.orthotropic_links = skin.coupling == "membrane" && skin.membrane_links == "orthotropic";
   m.pin_mass_kg = skin.pin_mass_g * 1e-3;
   const double alpha_max = reach / R;
   m.shell_mass_kg = kSkinDensity * t * 2.0 * std::numbers::pi * R * R * (1.0 - std::cos(alpha_max));
@@ -326,6 +334,21 @@ double CentralRowMax(const SkinMechanics& m, const PinLattice& lattice) {
   return widest;
 }
 
+// The same for the orthotropic membrane: each mode k a a^T adds k |a_r| sum |a_c| to row r.
+double OrthotropicRowMax(const SkinMechanics& m, const PinLattice& lattice) {
+  std::vector<double> row(2 * lattice.size(), 0.0);
+  for (const MembraneMode& mode : OrthotropicMembraneModes(m, lattice)) {
+    double sum = 0.0;
+    for (double c : mode.coef) sum += std::abs(c);
+    for (int c = 0; c < 6; ++c) row[2 * mode.pins[c / 2] + c % 2] += mode.k_N_m * std::abs(mode.coef[c]) * sum;
+  }
+  double widest = 0.0;
+  for (const auto& pin : lattice.pins) {
+    widest = std::max(widest, m.TipStiffness(pin.ring) + std::max(row[2 * pin.index], row[2 * pin.index + 1]));
+  }
+  return widest;
+}
+
 // Dome springs over the whole lattice (every pin may carry one): the widest pin's 1 / cos^2,
 // and the widest shear row of a spring's k_n v v^T, v = (1, a, b), a = n_y / n_x, b = n_z / n_x
 // (Gershgorin: k_n |a| (1 + |a| + |b|)).
@@ -354,6 +377,7 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, const PinLattice& latt
     m.k_rim_pin_N_m = m.k_rock_N_m > 0.0 ? Series(share, m.k_rock_N_m) : share;
   }
   if (m.central_links) m.central_row_max_N_m = CentralRowMax(m, lattice);
+  if (m.orthotropic_links) m.orthotropic_row_max_N_m = OrthotropicRowMax(m, lattice);
   if (skin.DomeSprings()) SetDomeBounds(m, lattice);
   return m;
 }
@@ -365,8 +389,13 @@ double SkinMechanics::StiffestOmega() const {
 double SkinMechanics::StiffestShearOmega() const {
   // Isotropic links: each adds 2 k_couple to its pins' rows. Central links: the widest row of
   // the lattice itself (From(skin, lattice)), or, without the lattice, every link at its
-  // largest row sum (1 + sqrt 2) k_link.
-  if (central_links) {
+  // largest row sum (1 + sqrt 2) k_link. The orthotropic membrane: its widest row
+  // (From(skin, lattice)), or without the lattice the central links' bound (its triangles'
+  // entries are k_couple / k_link of a sheet no stiffer than E t times the developed length).
+  if (orthotropic_links && orthotropic_row_max_N_m > 0.0) {
+    return std::sqrt((orthotropic_row_max_N_m + dome_shear_row_N_m) / pin_mass_kg);
+  }
+  if (central_links || orthotropic_links) {
     const double row = central_row_max_N_m > 0.0
                            ? central_row_max_N_m
                            : k_tip_N_m + k_rim_pin_N_m + max_degree * (1.0 + std::numbers::sqrt2) * k_link_N_m;
@@ -553,6 +582,25 @@ mjcf::Element CentralLinkTendon(const PinBodyPlan& plan, const PinLattice& latti
   return t;
 }
 
+// The orthotropic membrane (skin.membrane_links = orthotropic): one fixed tendon per stiffness
+// mode of each triangle, L = a . u over its three pins' shear joints, stiffness k.
+std::vector<mjcf::Element> OrthotropicTendons(const PinBodyPlan& plan, const PinLattice& lattice) {
+  std::vector<mjcf::Element> tendons;
+  const SkinNames& names = plan.names;
+  const std::vector<MembraneMode> modes = OrthotropicMembraneModes(plan.mech, lattice);
+  for (size_t m = 0; m < modes.size(); ++m) {
+    const MembraneMode& mode = modes[m];
+    mjcf::Element t("fixed");
+    t.Set("name", names.Part(fmt::format("membrane_mode_{}", m)))
+        .Set("stiffness", mode.k_N_m);
+    for (int c = 0; c < 6; ++c) {
+      t.Add("joint").Set("joint", names.PinShearJoint(mode.pins[c / 2], c % 2 == 0 ? 'y' : 'z')).Set("coef", mode.coef[c]);
+    }
+    tendons.push_back(std::move(t));
+  }
+  return tendons;
+}
+
 // Skin bending couples the normal motion of neighbouring pins; in a membrane lattice the
 // membrane (through the ridges) couples their shear motion. Each spring between two DOFs
 // (or from one DOF to the anchored skin) is a fixed tendon.
@@ -574,7 +622,7 @@ std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLat
     const bool m0 = plan.normal_dof[e[0]], m1 = plan.normal_dof[e[1]];
     spring(fmt::format("bend_{}_{}", e[0], e[1]), names.PinJoint(e[0]), m0, names.PinJoint(e[1]), m1,
            plan.mech.k_bend_N_m);
-    if (!membrane) continue;
+    if (!membrane || plan.mech.orthotropic_links) continue;
     if (plan.mech.central_links) {
       tendons.push_back(CentralLinkTendon(plan, lattice, e));
       continue;
@@ -583,6 +631,9 @@ std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLat
       spring(fmt::format("membrane_{}_{}_{}", e[0], e[1], axis), names.PinShearJoint(e[0], axis), true,
              names.PinShearJoint(e[1], axis), true, plan.mech.k_couple_N_m);
     }
+  }
+  if (membrane && plan.mech.orthotropic_links) {
+    for (auto& t : OrthotropicTendons(plan, lattice)) tendons.push_back(std::move(t));
   }
   return tendons;
 }

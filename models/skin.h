@@ -141,8 +141,13 @@ struct SkinConfig {
       "k_link + 2 c^2 / k_rock), which is k_couple for a radial link, k_link along a ring. At a step of 0.25 ms "
       "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.5 mm/s (README 'Membrane "
       "links'); opt-in. 'validate contact' judges it against its exact quasi-static solution on central links "
-      "(README 'Contact validation').",
-      Choices{"isotropic", "central"});
+      "(README 'Contact validation'). orthotropic: the skin between the pins as linear triangles of a corrugated "
+      "sheet - the concentric ridges make it radially soft (stretched across its waves it bends, compliance "
+      "1 + 6 (1 - nu^2) (a / t)^2, a half the ridge height) and hoop stiff (the developed length), shear "
+      "carried along the developed path - scaled by k_couple / k_link for the ridges' rocking; fingerprint "
+      "patterns only; opt-in; 'validate contact' judges it against its exact solution too (README 'Orthotropic "
+      "membrane').",
+      Choices{"isotropic", "central", "orthotropic"});
     v("normal_spring", normal_spring, "",
       "Where each lattice pin's normal (gel column) spring rests once the pin shears (coupling membrane or none; "
       "the shell ignores this). axial: at the pin's rest height along the sensor axis, so a pin sheared in the "
@@ -340,6 +345,18 @@ struct PinLattice {
   size_t size() const { return pins.size(); }
 };
 
+/// The concentric ridges make a fingerprint skin a corrugated sheet (README 'Orthotropic
+/// membrane'; flat for the smooth skin).
+struct Corrugation {
+  /// Radial compliance over the flat sheet's: stretched across its waves the sheet bends as
+  /// well as stretches, 1 + 6 (1 - nu^2) (a / t)^2, a the waves' amplitude (half the ridge height).
+  double radial_factor = 1.0;
+  /// Developed over projected length of one ridge period: the hoop direction has that much more
+  /// rubber per unit width, in-plane shear runs that much longer a path.
+  double length_ratio = 1.0;
+  static Corrugation Of(const SkinConfig& skin);
+};
+
 /// Spring constants and masses derived from SkinConfig (SI units).
 struct SkinMechanics {
   /// A membrane lattice's damping floor keeps each mode's stable step this many times above
@@ -355,6 +372,8 @@ struct SkinMechanics {
   double pin_damping_Ns_m = 0.0;    ///< normal-mode damping per pin
   double shell_damping_Ns_m = 0.0;  ///< damping of the skin's in-plane translation
   double membrane_N_m = 0.0;        ///< in-plane membrane stiffness E t (reported, see README)
+  Corrugation corrugation;          ///< the ridges' corrugation of the membrane (orthotropic links)
+  double dome_radius_m = 0.0;       ///< the core's radius (the lattice's arc-length layout)
   // Per-pin shear DOFs (coupling membrane or none):
   double k_rock_N_m = 0.0;          ///< ridge rocking stiffness at the contact point (0: no ridges)
   double k_tip_N_m = 0.0;           ///< contact point to base in shear: gel in series with the ridge
@@ -365,6 +384,8 @@ struct SkinMechanics {
   int max_degree = 6;               ///< most neighbours of any pin
   bool central_links = false;       ///< membrane lattice: links act along themselves (skin.membrane_links)
   double central_row_max_N_m = 0.0; ///< central links: widest row sum of the shear stiffness matrix (From(skin, lattice))
+  bool orthotropic_links = false;   ///< membrane lattice: the corrugated sheet's triangles (skin.membrane_links)
+  double orthotropic_row_max_N_m = 0.0;  ///< orthotropic: widest row sum, by magnitude, of the membrane's shear stiffness
   /// skin.normal_spring = dome on a lattice with per-pin shear DOFs (From(skin, lattice);
   /// else 1 and 0): 1 / cos^2 of the lattice's widest pin, its spring along the dome normal
   /// over k_n; and the widest shear-joint row of one pin's spring, k_n |a| (1 + |a| + |b|)

@@ -330,6 +330,15 @@ double CouplingLengthMm(const PinLattice& lattice, const SkinMechanics& mech, do
     const double l = r_out_m * std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
     edge_sum += link.k_yy * l * l;
   }
+  // The orthotropic membrane's modes: the same sum, the y component's energy under a unit
+  // gradient along y plus that along z.
+  for (const auto& mode : stiffness.modes) {
+    for (int d = 1; d <= 2; ++d) {
+      double stretch = 0.0;
+      for (int p = 0; p < 3; ++p) stretch += mode.coef[2 * p] * r_out_m * lattice.pins[mode.pins[p]].normal[d];
+      edge_sum += mode.k_N_m * stretch * stretch;
+    }
+  }
   return 1e3 * std::sqrt(edge_sum / (2.0 * static_cast<double>(lattice.pins.size()) * mech.k_tip_N_m));
 }
 

@@ -33,6 +33,13 @@ Eigen::MatrixXd StiffnessMatrix(const LatticeShearStiffness& s) {
       }
     }
   }
+  for (const auto& mode : s.modes) {
+    for (int r = 0; r < 6; ++r) {
+      for (int c = 0; c < 6; ++c) {
+        K(2 * mode.pins[r / 2] + r % 2, 2 * mode.pins[c / 2] + c % 2) += mode.k_N_m * mode.coef[r] * mode.coef[c];
+      }
+    }
+  }
   return K;
 }
 
@@ -212,9 +219,15 @@ void FillGrid(const std::vector<Segment>& segments, double gross_delta, double m
 // most 2.5e-4 Q/muP at 500 steps, 8e-5 at 1000 and 2e-5 at 2000 (first order in the step).
 constexpr int kTurnSteps = 1000;
 
-// Whether any link couples a pin's y and z (a central link neither along nor across y).
-bool CouplesComponents(const LatticeShearStiffness& s) {
-  return std::any_of(s.links.begin(), s.links.end(), [](const auto& l) { return l.k_yz != 0.0; });
+// Whether the stiffness couples any pin's y to any pin's z (a central link neither along nor
+// across y; the orthotropic membrane's triangles).
+bool CouplesComponents(const Eigen::MatrixXd& K) {
+  for (Eigen::Index r = 0; r < K.rows(); r += 2) {
+    for (Eigen::Index c = 1; c < K.cols(); c += 2) {
+      if (K(r, c) != 0.0) return true;
+    }
+  }
+  return false;
 }
 
 // Shears the lattice from delta = 0 until every contacting pin slips, one segment per release
@@ -267,6 +280,12 @@ LatticeShearStiffness LatticeShearStiffness::Of(const PinLattice& lattice, const
   std::vector<double> k_tip;
   k_tip.reserve(lattice.pins.size());
   for (const auto& pin : lattice.pins) k_tip.push_back(mech.TipStiffness(pin.ring));
+  if (mech.orthotropic_links) {
+    LatticeShearStiffness s;
+    s.k_tip_N_m = std::move(k_tip);
+    s.modes = OrthotropicMembraneModes(mech, lattice);
+    return s;
+  }
   if (!mech.central_links) return Isotropic(lattice, k_tip, mech.k_couple_N_m);
   LatticeShearStiffness s;
   s.k_tip_N_m = std::move(k_tip);
@@ -304,7 +323,7 @@ QuasiStaticShear SolveQuasiStaticShear(const LatticeShearStiffness& stiffness, c
   ShearState held = state;
   QuasiStaticShear first = out;
   std::vector<Segment> segments = ShearToGrossSlip(K, friction_N, mu_P, presliding_m, 0.0, held, first);
-  if (!CouplesComponents(stiffness)) {
+  if (!CouplesComponents(K)) {
     FillGrid(segments, first.gross_delta_m, mu_P, grid_points, first);
     return first;
   }

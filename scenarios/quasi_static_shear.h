@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "models/membrane_elements.h"
 #include "models/skin.h"
 
 namespace tactip {
@@ -34,12 +35,14 @@ struct LatticeShearStiffness {
   };
   std::vector<double> k_tip_N_m;  ///< per pin
   std::vector<Link> links;
+  std::vector<MembraneMode> modes;  ///< the orthotropic membrane's triangles, k a a^T each
 
   /// Links that pull on both components alike (skin.membrane_links = isotropic): k_couple I.
   static LatticeShearStiffness Isotropic(const PinLattice& lattice, const std::vector<double>& k_tip_N_m,
                                          double k_couple_N_m);
   /// The skin's own lattice: SkinMechanics::TipStiffness per pin, and its links isotropic or,
-  /// with mech.central_links, each along itself (k e e^T, SkinMechanics::CentralLinkBetween).
+  /// with mech.central_links, each along itself (k e e^T, SkinMechanics::CentralLinkBetween);
+  /// with mech.orthotropic_links, no links but the membrane's modes (OrthotropicMembraneModes).
   static LatticeShearStiffness Of(const PinLattice& lattice, const SkinMechanics& mech);
 };
 

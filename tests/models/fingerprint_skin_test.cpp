@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "mujoco_warning_guard.h"
+#include "models/membrane_elements.h"
 #include "models/rail_rig.h"
 #include "models/ridge_rocking.h"
 #include "models/skin.h"
@@ -433,6 +434,23 @@ void AddTendonStiffness(Eigen::MatrixXd& K, const SkinPart& part, const std::map
   }
 }
 
+/// The lattice's shear stiffness as built: each pin's own spring on both shear DOFs (in order
+/// pin, axis) plus k c c^T over the joints of every membrane tendon.
+Eigen::MatrixXd MembraneShearStiffness(const SkinPart& part, const PinLattice& lattice, const SkinMechanics& m) {
+  const int n = static_cast<int>(lattice.size());
+  std::map<std::string, int> dof;
+  for (int i = 0; i < n; ++i) {
+    dof[SkinNames{}.PinShearJoint(i, 'y')] = 2 * i;
+    dof[SkinNames{}.PinShearJoint(i, 'z')] = 2 * i + 1;
+  }
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  for (const auto& pin : lattice.pins) {
+    K(2 * pin.index, 2 * pin.index) = K(2 * pin.index + 1, 2 * pin.index + 1) = m.TipStiffness(pin.ring);
+  }
+  AddTendonStiffness(K, part, dof, [](const std::string& name) { return name.rfind("membrane_", 0) == 0; });
+  return K;
+}
+
 /// The v2 preset with central membrane links, every pin collidable, at 0.25 ms.
 struct CentralV2 {
   SkinConfig skin = [] {
@@ -514,18 +532,7 @@ TEST_F(FingerprintSkinPartTest, CentralLinksPullAlongThemselvesWithTheRidgesByTh
 TEST_F(FingerprintSkinPartTest, CentralLinksStiffestShearBoundCoversTheLargestEigenvalue) {
   const CentralV2 v2;
   const SkinMechanics& m = v2.mech;
-  // Shear DOFs in order (pin, axis); each tendon adds k c c^T over its joints.
-  const int n = static_cast<int>(v2.lattice.size());
-  std::map<std::string, int> dof;
-  for (int i = 0; i < n; ++i) {
-    dof[SkinNames{}.PinShearJoint(i, 'y')] = 2 * i;
-    dof[SkinNames{}.PinShearJoint(i, 'z')] = 2 * i + 1;
-  }
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  for (const auto& pin : v2.lattice.pins) {
-    K(2 * pin.index, 2 * pin.index) = K(2 * pin.index + 1, 2 * pin.index + 1) = m.TipStiffness(pin.ring);
-  }
-  AddTendonStiffness(K, v2.part, dof, [](const std::string& name) { return name.rfind("membrane_", 0) == 0; });
+  const Eigen::MatrixXd K = MembraneShearStiffness(v2.part, v2.lattice, m);
   const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues().maxCoeff();
   const double widest_row = K.cwiseAbs().rowwise().sum().maxCoeff();
   const double bound = m.StiffestShearOmega() * m.StiffestShearOmega() * m.pin_mass_kg;
@@ -537,6 +544,44 @@ TEST_F(FingerprintSkinPartTest, CentralLinksStiffestShearBoundCoversTheLargestEi
   const double every_link_at_k_link =
       m.TipStiffness(m.rim_ring) + m.max_degree * (1.0 + std::numbers::sqrt2) * m.k_link_N_m;
   EXPECT_GT(every_link_at_k_link, 3.0 * largest);
+}
+
+/// The v2 preset with the orthotropic membrane, every pin collidable, at 0.5 ms.
+struct OrthotropicV2 {
+  SkinConfig skin = [] {
+    SkinConfig s = PresetSkin("fingerprint-v2");
+    s.membrane_links = "orthotropic";
+    return s;
+  }();
+  PinLattice lattice = PinLattice::Build(skin);
+  SkinPart part = BuildSkin(skin, ContactConfig{}, lattice, std::vector<bool>(lattice.size(), true), 5e-4);
+  SkinMechanics mech = SkinMechanics::From(skin, lattice);
+};
+
+// skin.membrane_links = orthotropic: one tendon per stiffness mode of each (weighted) triangle over its
+// three pins' six shear joints, no pair links; the damping floor's Gershgorin bound covers the
+// assembled stiffness's largest eigenvalue.
+TEST_F(FingerprintSkinPartTest, OrthotropicMembraneIsThreeTendonsPerTriangleUnderTheStiffnessBound) {
+  const OrthotropicV2 v2;
+  const SkinMechanics& m = v2.mech;
+  ASSERT_TRUE(m.orthotropic_links);
+  ASSERT_FALSE(m.central_links);
+  int modes = 0;
+  for (const auto& t : v2.part.tendons) {
+    const std::string name = t.Get("name");
+    if (name.rfind("membrane_", 0) != 0) continue;
+    EXPECT_EQ(name.rfind("membrane_mode_", 0), 0u) << name;
+    EXPECT_EQ(t.children().size(), 6u) << name;
+    EXPECT_GT(std::stod(t.Get("stiffness")), 0.0) << name;
+    ++modes;
+  }
+  EXPECT_EQ(modes, static_cast<int>(3 * SymmetricRingTriangles(v2.lattice).size()));
+  const Eigen::MatrixXd K = MembraneShearStiffness(v2.part, v2.lattice, m);
+  const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues().maxCoeff();
+  const double bound = m.StiffestShearOmega() * m.StiffestShearOmega() * m.pin_mass_kg;
+  EXPECT_GE(bound, K.cwiseAbs().rowwise().sum().maxCoeff() * (1.0 - 1e-9));
+  EXPECT_GE(bound, largest);
+  EXPECT_LT(bound, 3.0 * largest) << "largest eigenvalue " << largest;
 }
 
 /// The v2 preset with dome springs (skin.normal_spring = dome) and `sets` applied (keys
@@ -778,6 +823,20 @@ TEST(FingerprintConfigTest, DomeSpringsAreRefusedOnV1NamingTheKey) {
   SkinConfig v2 = PresetSkin("fingerprint-v2");
   v2.normal_spring = "dome";
   EXPECT_NO_THROW(ValidateConfig(v2));
+}
+
+// The orthotropic membrane is the concentric ridges' corrugated sheet: a smooth membrane
+// lattice (hexagonal, no ridges) refuses it naming the key.
+TEST(FingerprintConfigTest, OrthotropicMembraneNeedsAFingerprintPattern) {
+  SkinConfig s;
+  s.coupling = "membrane";
+  s.membrane_links = "orthotropic";
+  const std::string msg = InputErrorOf([&] { ValidateConfig(s); });
+  EXPECT_EQ(msg.rfind("skin.membrane_links = 'orthotropic': ", 0), 0u) << msg;
+  EXPECT_NE(msg.find("fingerprint pattern"), std::string::npos) << msg;
+  SkinConfig v1 = PresetSkin("fingerprint-v1");
+  v1.membrane_links = "orthotropic";
+  EXPECT_NO_THROW(ValidateConfig(v1));
 }
 
 TEST(FingerprintConfigTest, PatternNarrowerThanOneRingIsRejected) {
