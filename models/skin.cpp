@@ -313,6 +313,16 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
 }
 
 namespace {
+// The widest row of a lattice's shear stiffness: each pin's own spring plus the larger of its
+// two axes' coupling rows (`row`, entries added by magnitude).
+double WidestShearRow(const SkinMechanics& m, const PinLattice& lattice, const std::vector<std::array<double, 2>>& row) {
+  double widest = 0.0;
+  for (const auto& pin : lattice.pins) {
+    widest = std::max(widest, m.TipStiffness(pin.ring) + std::max(row[pin.index][0], row[pin.index][1]));
+  }
+  return widest;
+}
+
 // Widest row sum of a central-link lattice's shear stiffness matrix, each link's entries
 // added by magnitude: a link (e_y, e_z, k) adds k |e_a| (2 |e_y| + 2 |e_z|) to the row of
 // each of its pins' axes a (its tendon's four joints), on top of the pin's own shear spring.
@@ -327,26 +337,18 @@ double CentralRowMax(const SkinMechanics& m, const PinLattice& lattice) {
       row[pin][1] += l.k_N_m * std::abs(l.ez) * both;
     }
   }
-  double widest = 0.0;
-  for (const auto& pin : lattice.pins) {
-    widest = std::max(widest, m.TipStiffness(pin.ring) + std::max(row[pin.index][0], row[pin.index][1]));
-  }
-  return widest;
+  return WidestShearRow(m, lattice, row);
 }
 
 // The same for the orthotropic membrane: each mode k a a^T adds k |a_r| sum |a_c| to row r.
 double OrthotropicRowMax(const SkinMechanics& m, const PinLattice& lattice) {
-  std::vector<double> row(2 * lattice.size(), 0.0);
+  std::vector<std::array<double, 2>> row(lattice.size(), {0.0, 0.0});
   for (const MembraneMode& mode : OrthotropicMembraneModes(m, lattice)) {
     double sum = 0.0;
     for (double c : mode.coef) sum += std::abs(c);
-    for (int c = 0; c < 6; ++c) row[2 * mode.pins[c / 2] + c % 2] += mode.k_N_m * std::abs(mode.coef[c]) * sum;
+    for (int c = 0; c < 6; ++c) row[mode.pins[c / 2]][c % 2] += mode.k_N_m * std::abs(mode.coef[c]) * sum;
   }
-  double widest = 0.0;
-  for (const auto& pin : lattice.pins) {
-    widest = std::max(widest, m.TipStiffness(pin.ring) + std::max(row[2 * pin.index], row[2 * pin.index + 1]));
-  }
-  return widest;
+  return WidestShearRow(m, lattice, row);
 }
 
 // Dome springs over the whole lattice (every pin may carry one): the widest pin's 1 / cos^2,

@@ -27,22 +27,11 @@
 #include "sim/sim_config.h"
 #include "sim/simulation.h"
 #include "input_error.h"
+#include "models/preset_skin.h"
 
 namespace tactip {
 namespace {
 
-/// A SkinConfig with the `--skin NAME` preset applied (the preset's keys carry the
-/// "skin." section prefix, which a bare SkinConfig does not have).
-SkinConfig PresetSkin(const std::string& name) {
-  SkinConfig s;
-  for (const auto& assignment : SkinPreset(name)) {
-    auto [key, value] = ParseAssignment(assignment);
-    EXPECT_EQ(key.rfind("skin.", 0), 0u) << "preset key outside the skin section: " << key;
-    ApplyFlat(s, FlatConfig{{key.substr(5), value}});
-  }
-  ValidateConfig(s);
-  return s;
-}
 
 /// Neighbour count of every pin.
 std::vector<int> Degrees(const PinLattice& lat) {

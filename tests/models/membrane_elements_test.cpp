@@ -15,18 +15,16 @@
 #include <vector>
 
 #include "models/membrane_elements.h"
+#include "models/preset_skin.h"
 #include "models/skin.h"
 #include "sim/sim_config.h"
 
 namespace tactip {
 namespace {
 
+// The preset on the orthotropic membrane.
 SkinConfig Preset(const std::string& name) {
-  SkinConfig s;
-  for (const auto& assignment : SkinPreset(name)) {
-    auto [key, value] = ParseAssignment(assignment);
-    ApplyFlat(s, FlatConfig{{key.substr(5), value}});
-  }
+  SkinConfig s = PresetSkin(name);
   s.membrane_links = "orthotropic";
   ValidateConfig(s);
   return s;
