@@ -37,7 +37,12 @@ class TestTempDir {
  private:
   static std::string CurrentTestName() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return info != nullptr ? info->name() : "suite";
+    // A parameterised test's name holds '/' (NAME/PARAM): one folder, not two.
+    std::string name = info != nullptr ? info->name() : "suite";
+    for (char& ch : name) {
+      if (ch == '/') ch = '_';
+    }
+    return name;
   }
   std::filesystem::path path_;
 };
