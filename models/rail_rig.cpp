@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "models/parts.h"
+
 namespace tactip {
 
 namespace {
@@ -64,57 +66,6 @@ double SensorMassKg(const SkinMechanics& mech, size_t n_pins) {
   return kSensorMassKg + mech.shell_mass_kg + static_cast<double>(n_pins) * mech.pin_mass_kg;
 }
 
-ContactBudget SceneContactBudget(const SimConfig& sim, int n_collidable) {
-  ContactBudget b;
-  b.nconmax = n_collidable + 8;
-  const int rows_per_contact = sim.cone == "pyramidal" ? 4 : 3;
-  b.njmax = rows_per_contact * b.nconmax + 16;
-  return b;
-}
-
-mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
-                        double gravity_z, int n_collidable) {
-  mjcf::Element root("mujoco");
-  root.Set("model", model_name);
-  const bool exact_noslip = sim.noslip == "exact" && sim.noslip_iterations > 0;
-  root.Add("compiler").Set("angle", "radian").Set("inertiafromgeom", "false");
-  root.Add("option")
-      .Set("timestep", sim.timestep_s)
-      .Set("integrator", "Euler")
-      .Set("solver", "Newton")
-      .Set("jacobian", "auto")
-      .Set("cone", sim.cone)
-      .Set("impratio", sim.impratio)
-      .SetInt("iterations", sim.iterations)
-      .Set("tolerance", sim.tolerance)
-      .SetInt("noslip_iterations", exact_noslip ? 0 : sim.noslip_iterations)
-      .Set("noslip_tolerance", sim.noslip_tolerance)
-      .Set("gravity", V3(0, 0, gravity_z));
-  const ContactBudget budget = SceneContactBudget(sim, n_collidable);
-  root.Add("size").SetInt("nconmax", budget.nconmax).SetInt("njmax", budget.njmax).SetInt("nuser_jnt", 1);
-  const bool post_pass = sim.noslip_iterations > 0;
-  if (post_pass && sim.free_sliding_speed_mm_s > 0.0) {
-    root.Add("custom")
-        .Add("numeric")
-        .Set("name", kFreeSlidingNumeric)
-        .SetInt("size", 1)
-        .Set("data", std::vector<double>{sim.free_sliding_speed_mm_s * 1e-3});
-  }
-  if (exact_noslip) {
-    // tactip's friction pass runs outside MuJoCo (tactip's Simulation reads this numeric);
-    // a plain MuJoCo program loading this file runs without it, so its contacts creep.
-    root.Comment(fmt::format("sim.noslip = exact: tactip replaces MuJoCo's noslip pass by its friction pass ({} rounds, "
-                             "pre-sliding {} mm); plain MuJoCo runs this model without it",
-                             sim.noslip_iterations, contact.presliding_mm));
-    root.Add("custom")
-        .Add("numeric")
-        .Set("name", kFrictionPassNumeric)
-        .SetInt("size", 2)
-        .Set("data", std::vector<double>{static_cast<double>(sim.noslip_iterations), contact.presliding_mm * 1e-3});
-  }
-  return root;
-}
-
 std::vector<bool> RailOuterSitePins(const RailSceneSpec& spec, size_t n_pins) {
   std::vector<bool> out(n_pins, spec.external_markers || spec.options.outer_sites);
   if (!out.empty()) out[0] = true;  // the centre pin's contact point: the creep measurement
@@ -141,25 +92,9 @@ void AddObjectJoint(mjcf::Element& slider, const RailSceneSpec& spec) {
       .Set("damping", spec.rail.damping_Ns_m);
 }
 
-// Rail: (a visual beam,) the slider on its joint, the stimulus on it.
-void AddRailAndObject(mjcf::Element& world, const RailSceneSpec& spec) {
-  const bool visual = spec.options.visual_geoms;
-  const double travel = RailLayout::kRailTravel;
-  if (visual) {
-    world.Add("geom")
-        .Set("name", "rail_beam")
-        .Set("type", "box")
-        .Set("pos", V3(0.045, 0, RailLayout::kAxisHeight + 0.5 * travel))
-        .Set("size", V3(0.01, 0.01, 0.5 * travel + 0.05))
-        .SetInt("contype", 0)
-        .SetInt("conaffinity", 0)
-        .Set("rgba", std::vector<double>{0.4, 0.4, 0.45, 1});
-  }
-  mjcf::Element& slider = world.Add("body");
-  slider.Set("name", RailNames::kSlider).Set("pos", V3(0, 0, RailLayout::kAxisHeight));
-  AddObjectJoint(slider, spec);
-  slider.Add("inertial").Set("pos", V3(0.01, 0, 0)).Set("mass", spec.object.mass_kg)
-      .Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
+// The stimulus on the slider: a flat plate (clear for acrylic) or a sphere cap (on a
+// visual base plate).
+void AddStimulus(mjcf::Element& slider, const RailSceneSpec& spec) {
   const std::vector<double> friction{spec.contact.friction, 0.005, 0.0001};
   mjcf::Element& stim = slider.Add("geom");
   stim.Set("name", RailNames::kStimulus)
@@ -182,7 +117,7 @@ void AddRailAndObject(mjcf::Element& world, const RailSceneSpec& spec) {
   }
   // Curved: a sphere cap of radius Rc, apex at x = 0 (on a visual base plate).
   stim.Set("type", "sphere").Set("pos", V3(Rc, 0, 0)).Set("size", std::vector<double>{Rc});
-  if (!visual) return;
+  if (!spec.options.visual_geoms) return;
   slider.Add("geom")
       .Set("name", "stimulus_plate")
       .Set("type", "box")
@@ -192,44 +127,69 @@ void AddRailAndObject(mjcf::Element& world, const RailSceneSpec& spec) {
       .SetInt("conaffinity", 0);
 }
 
-// One sensor's mount on the z stage: its body (sensor frame), a visual housing, its skin.
-void AddSensor(mjcf::Element& stage, const RailSceneSpec& spec, const SensorMountConfig& mount, mjcf::Element skin_body) {
-  mjcf::Element& sensor = stage.Add("body");
-  sensor.Set("name", RailNames::SensorMount(mount.name));
-  if (mount.offset_y_mm != 0.0) sensor.Set("pos", V3(0, mount.offset_y_mm * 1e-3, 0));
-  sensor.Add("inertial").Set("pos", V3(-0.02, 0, 0)).Set("mass", kSensorMassKg).Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
+// Rail: (a light and a visual beam,) the slider on its joint, the stimulus on it: the
+// scene's object.
+ScenePart RailPart(const RailSceneSpec& spec) {
+  ScenePart part;
+  const double travel = RailLayout::kRailTravel;
   if (spec.options.visual_geoms) {
-    sensor.Add("geom")
-        .Set("name", mount.Prefix() + "housing")
-        .Set("type", "cylinder")
-        .Set("pos", V3(-0.03, 0, 0))
-        .Set("zaxis", V3(1, 0, 0))
-        .Set("size", std::vector<double>{spec.skin.OuterRadiusMm() * 1e-3 + 0.003, 0.028})
+    part.bodies.emplace_back("light");
+    part.bodies.back().Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
+    part.bodies.emplace_back("geom");
+    part.bodies.back()
+        .Set("name", "rail_beam")
+        .Set("type", "box")
+        .Set("pos", V3(0.045, 0, RailLayout::kAxisHeight + 0.5 * travel))
+        .Set("size", V3(0.01, 0.01, 0.5 * travel + 0.05))
         .SetInt("contype", 0)
         .SetInt("conaffinity", 0)
-        .Set("rgba", std::vector<double>{0.15, 0.15, 0.15, 1});
+        .Set("rgba", std::vector<double>{0.4, 0.4, 0.45, 1});
   }
-  sensor.Append(std::move(skin_body));
+  part.bodies.emplace_back("body");
+  mjcf::Element& slider = part.bodies.back();
+  slider.Set("name", RailNames::kSlider).Set("pos", V3(0, 0, RailLayout::kAxisHeight));
+  AddObjectJoint(slider, spec);
+  slider.Add("inertial").Set("pos", V3(0.01, 0, 0)).Set("mass", spec.object.mass_kg)
+      .Set("diaginertia", V3(1e-4, 1e-4, 1e-4));
+  AddStimulus(slider, spec);
+  part.objects.push_back({RailNames::kSlider, RailNames::kSlider, RailNames::kSlide, spec.options.object_free_joint,
+                          RailNames::kStimulus, spec.object.mass_kg, spec.rail.friction_N, RailLayout::kAxisHeight});
+  return part;
 }
 
-// Arm: x stage (normal), z stage (vertical), a mount per sensor (with a visual housing) and
-// its skin. `m_sensors` is the mass of all sensors.
-void AddArmAndSensors(mjcf::Element& world, const RailSceneSpec& spec, double m_sensors,
-                      std::vector<mjcf::Element> skin_bodies) {
+// One sensor's mount on the arm's z stage, with its skin: a contact geom on the pins that
+// can reach the stimulus.
+ScenePart RailSensorPart(const RailSceneSpec& spec, const PinLattice& lattice, const SensorMountConfig& mount) {
+  std::vector<bool> collidable =
+      RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m, mount.offset_y_mm * 1e-3);
+  if (spec.options.all_pins_collide) collidable.assign(lattice.size(), true);
+  const std::vector<bool> outer = RailOuterSitePins(spec, lattice.size());
+  SensorMountSpec m;
+  m.name = mount.name;
+  m.pos = {0, mount.offset_y_mm * 1e-3, 0};
+  m.mass_kg = kSensorMassKg;
+  m.housing = spec.options.visual_geoms;
+  m.housing_radius_m = spec.skin.OuterRadiusMm() * 1e-3 + 0.003;
+  m.carrier_joint = RailNames::kArmZ;
+  m.press_servo = RailNames::kServoX;
+  return SensorMountPart(
+      m, BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s, outer, SkinNames{mount.Prefix()}),
+      outer);
+}
+
+// Arm: an x stage (normal) carrying a z stage (vertical) carrying the sensor parts `sensors`
+// (of total mass `m_sensors`); each stage under its position servo.
+ScenePart ArmPart(const RailSceneSpec& spec, double m_sensors, std::vector<ScenePart> sensors) {
   const double mx = 2.0 * spec.arm.stage_mass_kg + m_sensors;
   const double mz = spec.arm.stage_mass_kg + m_sensors;
-  const double x0 = SensorCentreX(spec.skin, spec.rail.approach_gap_mm * 1e-3);
-  mjcf::Element& ax = world.Add("body");
-  ax.Set("name", "arm_x_stage").Set("pos", V3(x0, 0, RailLayout::kAxisHeight));
-  ax.Add("joint").Set("name", RailNames::kArmX).Set("type", "slide").Set("axis", V3(1, 0, 0))
-      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mx));
-  ax.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
-  mjcf::Element& az = ax.Add("body");
-  az.Set("name", "arm_z_stage");
-  az.Add("joint").Set("name", RailNames::kArmZ).Set("type", "slide").Set("axis", V3(0, 0, 1))
-      .Set("damping", 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mz));
-  az.Add("inertial").Set("pos", V3(0, 0, 0)).Set("mass", spec.arm.stage_mass_kg).Set("diaginertia", V3(1e-3, 1e-3, 1e-3));
-  for (size_t k = 0; k < spec.sensors.size(); ++k) AddSensor(az, spec, spec.sensors[k], std::move(skin_bodies[k]));
+  SliderSpec x{"arm_x_stage", RailNames::kArmX, RailNames::kServoX, {}, {1, 0, 0}, spec.arm.stage_mass_kg, 1e-3,
+               spec.arm.kp_N_m, 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mx)};
+  x.pos = {SensorCentreX(spec.skin, spec.rail.approach_gap_mm * 1e-3), 0, RailLayout::kAxisHeight};
+  const SliderSpec z{"arm_z_stage", RailNames::kArmZ, RailNames::kServoZ, {}, {0, 0, 1}, spec.arm.stage_mass_kg, 1e-3,
+                     spec.arm.kp_N_m, 2.0 * spec.arm.damping_ratio * std::sqrt(spec.arm.kp_N_m * mz)};
+  std::vector<ScenePart> stage;
+  stage.push_back(SliderPart(z, std::move(sensors)));
+  return SliderPart(x, std::move(stage));
 }
 
 }  // namespace
@@ -237,46 +197,25 @@ void AddArmAndSensors(mjcf::Element& world, const RailSceneSpec& spec, double m_
 BuiltScene BuildRailScene(const RailSceneSpec& spec) {
   const PinLattice lattice = PinLattice::Build(spec.skin);
   const SkinMechanics mech = SkinMechanics::From(spec.skin, lattice.size());
-  // A skin per sensor, its elements prefixed with the sensor's name.
-  std::vector<mjcf::Element> skin_bodies, tendons;
+  // A sensor part per mount, its elements prefixed with the sensor's name.
+  std::vector<ScenePart> sensors;
   int n_collidable = 0;
   for (const SensorMountConfig& mount : spec.sensors) {
-    std::vector<bool> collidable =
-        RailCollidablePins(spec.skin, lattice, spec.rail, spec.max_depth_m, mount.offset_y_mm * 1e-3);
-    if (spec.options.all_pins_collide) collidable.assign(lattice.size(), true);
-    SkinPart skin = BuildSkin(spec.skin, spec.contact, lattice, collidable, spec.sim.timestep_s,
-                              RailOuterSitePins(spec, lattice.size()), SkinNames{mount.Prefix()});
-    n_collidable += skin.n_collidable;
-    skin_bodies.push_back(std::move(skin.body));
-    for (auto& t : skin.tendons) tendons.push_back(std::move(t));
+    sensors.push_back(RailSensorPart(spec, lattice, mount));
+    n_collidable += sensors.back().n_collidable;
   }
-
   mjcf::Element root = SceneRoot("tactip_rail", spec.sim, spec.contact, -9.81, n_collidable);
   if (spec.sim.SlidingTimestep() < spec.sim.timestep_s) {
     root.Comment(fmt::format("sim.sliding_timestep_s: tactip steps {:.6g} s from the gross-slip onset on; plain MuJoCo "
                              "runs this model at timestep {:.6g} s throughout",
                              spec.sim.SlidingTimestep(), spec.sim.timestep_s));
   }
-  mjcf::Element& world = root.Add("worldbody");
-  if (spec.options.visual_geoms) world.Add("light").Set("pos", V3(-0.2, -0.2, 0.4)).Set("dir", V3(1, 1, -1));
-  AddRailAndObject(world, spec);
+  // The rail with its object, then the arm carrying the sensors.
   const double m_sensors = static_cast<double>(spec.sensors.size()) * SensorMassKg(mech, lattice.size());
-  AddArmAndSensors(world, spec, m_sensors, std::move(skin_bodies));
-
-  // Passive skin coupling and the arm servos.
-  if (!tendons.empty()) {
-    mjcf::Element& tendon = root.Add("tendon");
-    for (auto& t : tendons) tendon.Append(std::move(t));
-  }
-  mjcf::Element& act = root.Add("actuator");
-  act.Add("position").Set("name", RailNames::kServoX).Set("joint", RailNames::kArmX).Set("kp", spec.arm.kp_N_m);
-  act.Add("position").Set("name", RailNames::kServoZ).Set("joint", RailNames::kArmZ).Set("kp", spec.arm.kp_N_m);
-
-  BuiltScene out;
-  out.xml = root.ToXml();
-  out.n_pins = static_cast<int>(lattice.size());
-  out.n_collidable = n_collidable;
-  return out;
+  std::vector<ScenePart> parts;
+  parts.push_back(RailPart(spec));
+  parts.push_back(ArmPart(spec, m_sensors, std::move(sensors)));
+  return AssembleScene(std::move(root), std::move(parts));
 }
 
 }  // namespace tactip

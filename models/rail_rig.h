@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "models/mjcf.h"
+#include "models/scene_part.h"
 #include "models/skin.h"
 #include "sim/config.h"
 #include "sim/sim_config.h"
@@ -154,20 +155,6 @@ struct RailNames {
 std::vector<bool> RailCollidablePins(const SkinConfig& skin, const PinLattice& lattice, const RailConfig& rail,
                                      double max_depth_m, double offset_y_m = 0.0);
 
-/// MuJoCo's contact budget of a scene with `n_collidable` pin contacts: one contact per pin
-/// plus spare, and constraint rows for them (3 per contact with elliptic cones, 4 pyramidal)
-/// plus joint limits and dry friction.
-struct ContactBudget {
-  int nconmax = 0;
-  int njmax = 0;
-};
-ContactBudget SceneContactBudget(const SimConfig& sim, int n_collidable);
-
-/// A scene root: model name, compiler settings, solver options from `sim`, and the contact
-/// budget SceneContactBudget.
-mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, const ContactConfig& contact,
-                        double gravity_z, int n_collidable);
-
 /// Parts the rail scene leaves out because no run needs them. Every field false is the lean
 /// scene all scenarios simulate; each field set puts one part back, so `tactip bench --lean`
 /// can measure what leaving it out saves. None of them is a config key.
@@ -210,15 +197,9 @@ std::vector<bool> RailOuterSitePins(const RailSceneSpec& spec, size_t n_pins);
 /// Moving mass of one sensor carried by the arm's z stage: housing plus skin (kg).
 double SensorMassKg(const SkinMechanics& mech, size_t n_pins);
 
-/// A built scene: the MJCF text and facts about it.
-struct BuiltScene {
-  std::string xml;
-  int n_pins = 0;        ///< pins of each sensor
-  int n_collidable = 0;  ///< pins with a contact geom, of all sensors
-};
-
-/// Assembles the rail scene: world, rail + slider + stimulus, arm + sensor + skin; only
-/// what spec.options puts back beyond what the runs need.
+/// Assembles the rail scene from its parts: the rail with the slider and its stimulus (the
+/// object), the arm with its servos carrying a mount and skin per sensor; only what
+/// spec.options puts back beyond what the runs need.
 BuiltScene BuildRailScene(const RailSceneSpec& spec);
 
 /// Initial arm x offset: the dome centre's world x when the apex is `gap_m` from the

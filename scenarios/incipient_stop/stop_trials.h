@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "scenarios/incipient_stop/stop_controller.h"
-#include "scenarios/rail.h"
+#include "scenarios/rail/rail.h"
 
 namespace tactip {
 

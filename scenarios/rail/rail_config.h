@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "models/rail_rig.h"
-#include "scenarios/rail/run_health.h"
+#include "scenarios/scene/run_health.h"
 #include "sensors/camera.h"
 #include "sensors/labels.h"
 #include "sensors/tactile_image.h"

@@ -12,51 +12,24 @@
 
 #include "scenarios/rail/rail_config.h"
 #include "scenarios/rail/rail_controller.h"
-#include "scenarios/rail/run_health.h"
+#include "scenarios/scene/scene_run.h"
+#include "scenarios/scene/run_health.h"
 #include "sensors/dataset.h"
+#include "sim/base/errors.h"
 #include "sim/simulation.h"
 #include "sim/step_profile.h"
 
 namespace tactip {
 
-/// Run-level results beyond the arrays, also stored as run attributes.
-struct RailRunSummary {
-  double gross_slip_onset_s = 0.0;   ///< first gross-slip frame after the lift (NaN: none)
-  double incipient_onset_s = 0.0;    ///< first partial-slip frame after retraction starts, before gross slip (NaN: none)
-  double incipient_lead_s = 0.0;     ///< gross_slip_onset_s - incipient_onset_s (NaN: either missing)
-  double pre_slip_fraction = 0.0;    ///< pins in contact at retraction start that slid before gross slip
-  double object_fall_s = 0.0;        ///< object dropped fall_threshold_mm (NaN: never)
-  double predicted_onset_s = 0.0;    ///< Coulomb: mu*sum(N) + rail friction falls below m g
-  double coulomb_early_s = 0.0;      ///< mu*sum(N) - rail friction falls below m g (earliest skin slip)
+/// The events of a rail run (SceneRunSummary: the object on the rail and its sensors) and
+/// the protocol's own figures, also stored as run attributes.
+struct RailRunSummary : SceneRunSummary {
   double retract_start_s = 0.0;      ///< retraction begins
-  double creep_um = 0.0;             ///< object sliding relative to the centre pin before onset
   double press_depth_mm = 0.0;       ///< this run's depth (with jitter)
   double friction = 0.0;             ///< this run's friction coefficient (with jitter)
-  double sim_time_s = 0.0;           ///< simulated time
-  double wall_time_s = 0.0;          ///< wall-clock time of the run
-  long long steps = 0;               ///< physics steps
-  int mujoco_warnings = 0;           ///< warnings MuJoCo raised (a run with any stops early)
-  bool held = true;                  ///< false: the object slipped before the retraction started
-  RunHealth health;                  ///< run health figures and verdict
-  std::vector<ControllerAction> actions;  ///< what the run's controller did
-  std::map<std::string, double> controller_figures;  ///< what it measured (RailController::Figures)
 };
 
-/// Thrown by a run when its stop flag becomes true (Ctrl-C).
-class Interrupted : public std::runtime_error {
- public:
-  Interrupted() : std::runtime_error("interrupted") {}
-};
-
-struct RailSceneIds;
-
-/// What a speed measurement takes from one run: the step's cost split and the actuator
-/// controls of every step (to replay the same motion with bare mj_step).
-struct RunInstrumentation {
-  StepProfile profile;
-  std::vector<double> ctrl;        ///< nu values per step
-  std::vector<double> timestep_s;  ///< each step's length (the sliding step from the gross-slip onset)
-};
+struct RailScene;
 
 /// Runs rail-protocol runs of one configuration. Thread-safe: Run() may be called from
 /// several threads at once (the compiled model is shared read-only).
@@ -89,7 +62,7 @@ class RailScenario {
   int n_collidable() const;
 
  private:
-  std::unique_ptr<RailSceneIds> ids_;
+  std::unique_ptr<RailScene> scene_;
   RailScenarioConfig cfg_;
 };
 

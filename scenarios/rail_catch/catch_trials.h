@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/rail.h"
+#include "scenarios/rail/rail.h"
 #include "scenarios/rail_catch/catch_controller.h"
 
 namespace tactip {

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,7 +25,7 @@
 #include "detectors/threshold.h"
 #include "models/skin.h"
 #include "scenarios/incipient_stop/stop_controller.h"
-#include "scenarios/rail.h"
+#include "scenarios/rail/rail.h"
 #include "scenarios/rail_catch/catch_controller.h"
 #include "scenarios/registry.h"
 #include "sim/config.h"
@@ -97,6 +98,9 @@ struct Case {
   std::vector<std::string> overrides;  // --set, in order
   Loop loop = Loop::kOffline;
 };
+
+// gtest prints a case by its name.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 // Short protocols (a 10 mm lift, retraction at 1-5 mm/s): each case takes seconds.
 const std::vector<Case>& Cases() {

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/accuracy/study.h"
+#include "scenarios/studies/accuracy/study.h"
 #include "scenarios/app/cli/common.h"
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
-#include "scenarios/plot.h"
+#include "scenarios/figures/plot.h"
 #include "sim/base/files.h"
 
 namespace tactip::cli {

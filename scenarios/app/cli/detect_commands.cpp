@@ -20,9 +20,9 @@
 #include "scenarios/app/cli/lean_command.h"
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
-#include "scenarios/detector_bench.h"
-#include "scenarios/slip_data.h"
-#include "scenarios/speed.h"
+#include "scenarios/studies/detector_bench/detector_bench.h"
+#include "sensors/slip_data.h"
+#include "scenarios/studies/speed/speed.h"
 #include "sensors/dataset.h"
 #include "sim/base/files.h"
 

@@ -1,10 +1,10 @@
 #pragma once
-// `tactip bench --lean`: the lean-scene study (see scenarios/lean.h).
+// `tactip bench --lean`: the lean-scene study (see scenarios/studies/lean/lean.h).
 
 #include <string>
 #include <vector>
 
-#include "scenarios/lean.h"
+#include "scenarios/studies/lean/lean.h"
 
 namespace tactip::cli {
 

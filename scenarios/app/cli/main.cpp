@@ -19,7 +19,7 @@
 #include "scenarios/app/cli/study_commands.h"
 #include "scenarios/app/cli/track_command.h"
 #include "scenarios/app/viewer/view_command.h"
-#include "scenarios/rail.h"
+#include "scenarios/rail/rail.h"
 #include "sim/base/errors.h"
 #include "tactip/version.h"
 

@@ -10,8 +10,8 @@
 #include "scenarios/app/cli/common.h"
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
-#include "scenarios/plot.h"
-#include "scenarios/run_figures/run_figures.h"
+#include "scenarios/figures/plot.h"
+#include "scenarios/figures/run_figures.h"
 #include "sim/base/files.h"
 #include "sim/config.h"
 

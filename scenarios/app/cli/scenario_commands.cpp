@@ -10,7 +10,7 @@
 #include "scenarios/app/cli/common.h"
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
-#include "scenarios/dataset_merge.h"
+#include "sensors/dataset_merge.h"
 #include "sim/base/files.h"
 
 namespace tactip::cli {

@@ -9,7 +9,7 @@
 
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
-#include "scenarios/stability_suite.h"
+#include "scenarios/studies/stability/stability_suite.h"
 #include "sim/config.h"
 #include "sim/base/files.h"
 

@@ -8,7 +8,7 @@
 #include "detectors/pin_csv.h"
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
-#include "scenarios/frame_tracking.h"
+#include "sensors/frame_tracking.h"
 #include "sim/base/files.h"
 
 namespace tactip::cli {

@@ -3,8 +3,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "scenarios/rail.h"
-#include "scenarios/speed.h"
+#include "scenarios/rail/rail.h"
+#include "scenarios/studies/speed/speed.h"
 
 namespace {
 

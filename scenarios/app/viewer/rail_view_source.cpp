@@ -34,7 +34,7 @@ const char* PhaseAt(const RailSchedule& s, double t) {
 }  // namespace
 
 RailViewSource::RailViewSource(const RailScenarioConfig& cfg, int index, std::uint64_t seed)
-    : cfg_(Validated(cfg)), ids_(cfg_, WithVisualParts()), index_(index), seed_(seed), run_(cfg_, ids_, index, seed) {}
+    : cfg_(Validated(cfg)), scene_(cfg_, WithVisualParts()), index_(index), seed_(seed), run_(cfg_, scene_, index, seed) {}
 
 bool RailViewSource::Step() {
   if (finished_) return false;
@@ -64,8 +64,8 @@ std::vector<GeomColour> RailViewSource::Colours() const {
 
 std::vector<int> RailViewSource::pin_geoms() const {
   std::vector<int> geoms;
-  for (const TactileSensorIds& sensor : ids_.sensors) {
-    for (int g : sensor.pin_geom) {
+  for (const SceneSensor& sensor : scene_.scene.sensors) {
+    for (int g : sensor.ids.pin_geom) {
       if (g >= 0) geoms.push_back(g);
     }
   }
@@ -74,8 +74,8 @@ std::vector<int> RailViewSource::pin_geoms() const {
 
 CameraView RailViewSource::Camera() const {
   CameraView view;
-  for (const TactileSensorIds& sensor : ids_.sensors) view.look_at_bodies.push_back(sensor.body);
-  view.look_at_bodies.push_back(ids_.slider_body);
+  for (const SceneSensor& sensor : scene_.scene.sensors) view.look_at_bodies.push_back(sensor.ids.body);
+  view.look_at_bodies.push_back(scene_.scene.object.body);
   view.distance_m = kCameraDistanceM;
   view.azimuth_deg = 80.0;
   view.elevation_deg = -20.0;

@@ -48,13 +48,13 @@ class RailViewSource : public ViewSource {
   double give_up_s() const { return run_.schedule().give_up; }
 
   /// The compiled scene shown.
-  const CompiledModel& model() const { return *ids_.model; }
+  const CompiledModel& model() const { return *scene_.scene.model; }
   /// What the run has recorded so far (every camera frame up to now), as `generate` does.
   const RunRecord& record() const { return rec_; }
   /// The sensor (its pins' labels and geoms).
   const TactileSensor& sensor() const { return run_.sensor(); }
   /// The object's geom, and the contact geom of every pin that has one.
-  int object_geom() const { return ids_.stimulus_geom; }
+  int object_geom() const { return scene_.scene.object.contact_geom; }
   std::vector<int> pin_geoms() const;
   int index() const { return index_; }
   std::uint64_t seed() const { return seed_; }
@@ -65,8 +65,8 @@ class RailViewSource : public ViewSource {
   static constexpr double kCameraDistanceM = 0.12;
 
  private:
-  const RailScenarioConfig cfg_;  // the run and the ids refer to these two
-  const RailSceneIds ids_;
+  const RailScenarioConfig cfg_;  // the run and the scene refer to these two
+  const RailScene scene_;
   const int index_;
   const std::uint64_t seed_;
   RailRun run_;

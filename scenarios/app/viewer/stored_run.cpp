@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "scenarios/registry.h"
-#include "scenarios/slip_data.h"
+#include "sensors/slip_data.h"
 
 namespace tactip {
 
