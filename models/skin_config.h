@@ -46,8 +46,40 @@ struct SkinConfig {
   double gel_flow_depth_mm = 2.5;   ///< gel field: depth of the gel layer that carries the lateral flow
   double gel_squeeze_mm = 0.5;      ///< gel field: indentation at which a pin's sideways squeeze saturates
 
+  /// Lists every key of the section in order (sim/config.h), one group of keys per helper.
   template <class V>
   void Visit(V& v) {
+    VisitGeometry(v);
+    VisitMaterials(v);
+    VisitDamping(v);
+    VisitCoupling(v);
+    VisitPattern(v);
+    VisitMarkers(v);
+  }
+  /// The gel's shear modulus in Pa: gel_shear_modulus_kpa, or gel_modulus_kpa / 3 when that is 0.
+  double GelShearModulusPa() const;
+  /// Damping ratio of the shell skin's in-plane mode: gel_loss_tangent / 2 under shell_damping = gel,
+  /// else shear_damping_ratio.
+  double ShellDampingRatio() const { return shell_damping == "gel" ? 0.5 * gel_loss_tangent : shear_damping_ratio; }
+  /// Radius of the contact surface: the dome plus the ridges of a fingerprint pattern.
+  double OuterRadiusMm() const;
+  /// Radius of each pin's spherical contact patch (fingerprint: at most half the ring step).
+  double ContactRadiusMm() const;
+  /// True for the fingerprint patterns.
+  bool Fingerprint() const { return pattern != "smooth"; }
+  /// Lattice pins whose gel springs rest on the dome (skin.normal_spring = dome; the shell has none).
+  bool DomeSprings() const { return normal_spring == "dome" && coupling != "shell"; }
+  /// Radial step between pin rings along the dome: ridge_spacing_mm (fingerprint) or pitch_mm.
+  double RingStepMm() const { return Fingerprint() ? ridge_spacing_mm : pitch_mm; }
+  /// Arc length from the apex to the dome's base, where the skin is clamped: pi R / 2.
+  double BaseArcMm() const { return 0.5 * std::numbers::pi * radius_mm; }
+  /// Cross-field rules (the lattice must fit on the hemisphere).
+  void ValidateRules() const;
+
+ private:
+  /// The dome and the hexagonal pin lattice on it: radius, pitch, rings, skin thickness, pins.
+  template <class V>
+  void VisitGeometry(V& v) {
     v("radius_mm", radius_mm, "mm", "Outer radius of the hemispherical dome (TacTip: 40 mm diameter).",
       Bounds::Closed(5.0, 100.0));
     v("pitch_mm", pitch_mm, "mm", "Pin spacing on the hexagonal lattice, measured along the dome (TacTip: 3 mm).",
@@ -66,6 +98,10 @@ struct SkinConfig {
       "Moving mass per pin: the pin plus its share of gel (gel ~1 g/cm^3 x 7.8 mm^2 cell x 20 mm ~ 0.16 g). "
       "Larger values slow the pin mode (omega = sqrt(k/m)) and allow a larger timestep.",
       Bounds::Closed(0.01, 100.0));
+  }
+  /// The gel's and the skin rubber's moduli, and the gel's depth.
+  template <class V>
+  void VisitMaterials(V& v) {
     v("gel_modulus_kpa", gel_modulus_kpa, "kPa",
       "Young's modulus of the gel. Each pin rests on a gel column: k_normal = E A_cell / h_gel, "
       "k_shear = (E/3) A_cell / h_gel (incompressible gel). 100 kPa gives ~2.6 N at 3 mm indentation.",
@@ -87,6 +123,10 @@ struct SkinConfig {
       "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation; the fingerprint presets "
       "set a fitted 0.4 MPa, README 'The skin's materials').",
       Bounds::Closed(kSkinModulusMinMpa, kSkinModulusMaxMpa));
+  }
+  /// The damping of the pins' normal and shear modes and of the shell.
+  template <class V>
+  void VisitDamping(V& v) {
     v("damping_ratio", damping_ratio, "",
       "Damping ratio of each pin's normal mode (gel viscosity); joint damping 2 zeta sqrt(k m), "
       "integrated implicitly.",
@@ -110,6 +150,10 @@ struct SkinConfig {
       "0.08) lies mid-range (README 'Slip signatures against the hardware' gives the gross-slip spike it "
       "makes).",
       Bounds::Closed(0.01, 2.0));
+  }
+  /// The contact patch, and how the pins are coupled through the skin and held at its rim.
+  template <class V>
+  void VisitCoupling(V& v) {
     v("contact_radius_mm", contact_radius_mm, "mm",
       "Radius of the spherical contact patch at each pin; half the pitch so neighbouring patches touch.",
       Bounds::Closed(0.1, 10.0));
@@ -156,6 +200,10 @@ struct SkinConfig {
       "springs'). Opt-in; refused on fingerprint-v1 (its edge pins flicker in and out of contact while held) "
       "and by 'validate contact' and 'accuracy domes' (their exact solution has axial springs).",
       Choices{"axial", "dome"});
+  }
+  /// The outer pattern: smooth, or a fingerprint's ridges and the pin rings under them.
+  template <class V>
+  void VisitPattern(V& v) {
     v("pattern", pattern, "",
       "Outer skin pattern. smooth: hexagonal pin lattice (pitch_mm, rings). fingerprint-v1: concentric raised "
       "ridge rings with the pins extending into them (they pivot: the inner marker and the outer contact point "
@@ -190,6 +238,10 @@ struct SkinConfig {
     v("pattern_radius_mm", pattern_radius_mm, "mm",
       "Fingerprint: arc radius of the outermost ring; rings sit at k * ridge_spacing_mm <= this.",
       Bounds::Closed(1.0, 60.0));
+  }
+  /// What moves the markers: the pins alone, or the gel's lateral flow as well.
+  template <class V>
+  void VisitMarkers(V& v) {
     v("marker_model", marker_model, "",
       "What moves the markers the cameras see. gel: each pin's body (MuJoCo) plus the gel's lateral flow - an "
       "indented pin squeezes the incompressible gel sideways and the flow carries every marker outwards, so a "
@@ -207,25 +259,6 @@ struct SkinConfig {
       "steep rise by 1 mm and slow growth after (README).",
       Bounds::Closed(0.01, 5.0));
   }
-  /// The gel's shear modulus in Pa: gel_shear_modulus_kpa, or gel_modulus_kpa / 3 when that is 0.
-  double GelShearModulusPa() const;
-  /// Damping ratio of the shell skin's in-plane mode: gel_loss_tangent / 2 under shell_damping = gel,
-  /// else shear_damping_ratio.
-  double ShellDampingRatio() const { return shell_damping == "gel" ? 0.5 * gel_loss_tangent : shear_damping_ratio; }
-  /// Radius of the contact surface: the dome plus the ridges of a fingerprint pattern.
-  double OuterRadiusMm() const;
-  /// Radius of each pin's spherical contact patch (fingerprint: at most half the ring step).
-  double ContactRadiusMm() const;
-  /// True for the fingerprint patterns.
-  bool Fingerprint() const { return pattern != "smooth"; }
-  /// Lattice pins whose gel springs rest on the dome (skin.normal_spring = dome; the shell has none).
-  bool DomeSprings() const { return normal_spring == "dome" && coupling != "shell"; }
-  /// Radial step between pin rings along the dome: ridge_spacing_mm (fingerprint) or pitch_mm.
-  double RingStepMm() const { return Fingerprint() ? ridge_spacing_mm : pitch_mm; }
-  /// Arc length from the apex to the dome's base, where the skin is clamped: pi R / 2.
-  double BaseArcMm() const { return 0.5 * std::numbers::pi * radius_mm; }
-  /// Cross-field rules (the lattice must fit on the hemisphere).
-  void ValidateRules() const;
 };
 
 }  // namespace tactip
