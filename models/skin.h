@@ -12,6 +12,8 @@
 #include "models/mjcf.h"
 #include "models/contact_config.h"
 #include "models/skin_config.h"
+#include "models/skin_presets.h"
+#include "models/skin_timesteps.h"
 #include "sim/config.h"
 
 namespace tactip {
@@ -127,45 +129,6 @@ struct SkinMechanics {
   /// the floor c it is c / g, which is the floor for that mass.
   double DomeSpringDamping(double c_normal, double c_tip) const;
 };
-
-/// The skin keys of the `--skin NAME` presets: "skin.key=value" overrides for smooth,
-/// fingerprint-v1 and fingerprint-v2 (throws InputError for another name). The fingerprint
-/// presets carry the membrane lattice's resolved materials (a gel of 6.67 kPa in shear, a
-/// 0.4 MPa skin, the rim clamped); the smooth skin keeps the defaults.
-std::vector<std::string> SkinPreset(const std::string& name);
-
-/// Largest step at which a skin with per-pin shear DOFs is validated at mu = 1, s (see
-/// ShearDofValidatedTimestep in models/stability.h).
-inline constexpr double kShearDofValidatedStepS = 0.001;
-
-/// A shell skin whose in-plane mode is damped below this ratio (SkinConfig::ShellDampingRatio)
-/// rings after its release, and is validated with a sliding step up to kLightShellValidatedStepS only.
-inline constexpr double kLightShellDampingRatio = 0.5;
-
-/// Largest sliding step (from the gross-slip onset on) at which a lightly damped shell skin is
-/// validated, s; its held phase takes the default 2 ms (gel 0.08, flat at 0.1 and 1 mm/s and the
-/// four held-phase scenes: healthy, onsets within 3 ms of 1 ms throughout). At 2 ms the released
-/// shell's ringing makes the sliding contacts chatter during gross slip (the total normal force
-/// of the flat press at 1 mm/s falls to 0.04 of its value at the onset with 6 of 19 pins in
-/// contact under the gel's 0.08, to 0.50 with 12 of 19 under a fixed damper at 0.1, to 0.69 with
-/// 13 at 0.3; at 0.5 and above it stays at 0.81 or more with all 19). At 1 ms it stays at 0.92
-/// (gel 0.08) and 0.94 (fixed 0.1) with all 19 (README, The pin-lattice skin).
-inline constexpr double kLightShellValidatedStepS = 0.001;
-
-/// The step the fingerprint-v2 preset sets, s. At the 1 ms validated step v2's edge contacts
-/// lift off and touch the object again as the ridges let go in turn (9 of 10 incipient runs
-/// flagged by run health, one pin at 0.02-55 mN); at 0.5 ms 1 of 10 (0.02 mN), and the gross
-/// onsets of those ten runs lie 0.08 s (mean) from the 0.25 ms ones against 0.19 s at 1 ms
-/// (README, Numerical stability).
-inline constexpr double kFingerprintV2StepS = 0.0005;
-
-/// The step `--skin NAME` sets: none for the smooth skin (the scene's default), the validated
-/// step kShearDofValidatedStepS for fingerprint-v1, kFingerprintV2StepS for fingerprint-v2.
-std::optional<double> SkinPresetTimestep(const std::string& name);
-
-/// What `--skin NAME` sets in a scene's config: SkinPreset and, for a fingerprint skin (per-pin
-/// shear DOFs), its step sim.timestep_s = SkinPresetTimestep(name).
-std::vector<std::string> SkinPresetOverrides(const std::string& name);
 
 /// Names of a skin's elements in the MJCF, so scenarios can look the parts up. Every name
 /// starts with `prefix`: the sensor's name and '/' in a scene of named sensors ("left/pin3"),
