@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "models/membrane_elements.h"
-#include "models/ridge_rocking.h"
 #include "models/rim_anchor.h"
 #include "sim/pressing_axis.h"
 
@@ -32,23 +31,13 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
   double a = skin.pitch_mm * 1e-3;  // neighbour distance
   double reach = skin.rings * a;    // arc radius of the lattice
   if (skin.Fingerprint()) {
-    // A pin's cell: one ring step by the arc per pin, 2 pi k s / (ppr k).
-    a = skin.ridge_spacing_mm * 1e-3;
-    const double b = 2.0 * std::numbers::pi * a / skin.pins_per_ring;
-    m.cell_area_m2 = a * b;
+    // A pin's cell on its ring, and its ridge's rocking (RidgeCell).
+    const RidgeCell ridge = RidgeCell::Of(skin, D);
+    a = ridge.step_m;
+    m.cell_area_m2 = a * ridge.arc_m;
     reach = skin.pattern_radius_mm * 1e-3;
-    // Ridge rocking: a ridge of base width w = s / 2 (with its pin) tilts on the gel
-    // (RockingGelStiffness) against the skin hinges in the valleys on both sides (plate
-    // bending, 2 D b / valley). At the contact point, k_rock = k_theta / lever^2.
-    const double w = 0.5 * a, valley = a - w;
-    const double k_theta = RockingGelStiffness(skin.ridge_rocking, E_gel, h_gel, b, w) + 2.0 * D * b / valley;
-    const double h = skin.ridge_height_mm * 1e-3;
-    const double lever = skin.ridge_shape == "square" ? h : 0.5 * h;
-    m.k_rock_N_m = k_theta / (lever * lever);
-    // The camera sees v1's pin inner end a skin thickness below the pivot at the ridge
-    // root, so it moves against the contact point; v2's pins run through the skin at
-    // the peak and move with the skin under it.
-    m.marker_rock_factor = skin.pattern == "fingerprint-v1" ? 1.0 + t / lever : 1.0;
+    m.k_rock_N_m = ridge.k_rock_N_m;
+    m.marker_rock_factor = ridge.marker_rock_factor;
   } else {
     m.cell_area_m2 = std::sqrt(3.0) / 2.0 * a * a;
   }

@@ -11,6 +11,7 @@
 
 #include "models/mjcf.h"
 #include "models/contact_config.h"
+#include "models/fingerprint_ridges.h"
 #include "models/pin_lattice.h"
 #include "models/skin_config.h"
 #include "models/skin_presets.h"
@@ -18,18 +19,6 @@
 #include "sim/config.h"
 
 namespace tactip {
-
-/// The concentric ridges make a fingerprint skin a corrugated sheet (README 'Orthotropic
-/// membrane'; flat for the smooth skin).
-struct Corrugation {
-  /// Radial compliance over the flat sheet's: stretched across its waves the sheet bends as
-  /// well as stretches, 1 + 6 (1 - nu^2) (a / t)^2, a the waves' amplitude (half the ridge height).
-  double radial_factor = 1.0;
-  /// Developed over projected length of one ridge period: the hoop direction has that much more
-  /// rubber per unit width, in-plane shear runs that much longer a path.
-  double length_ratio = 1.0;
-  static Corrugation Of(const SkinConfig& skin);
-};
 
 /// Spring constants and masses derived from SkinConfig (SI units).
 struct SkinMechanics {
