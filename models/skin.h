@@ -12,6 +12,7 @@
 #include "models/mjcf.h"
 #include "models/contact_config.h"
 #include "models/fingerprint_ridges.h"
+#include "models/membrane_links.h"
 #include "models/pin_lattice.h"
 #include "models/skin_config.h"
 #include "models/skin_mechanics.h"

@@ -1,12 +1,11 @@
 #include "models/skin_mechanics.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
-#include "models/membrane_elements.h"
+#include "models/membrane_links.h"
 #include "models/rim_anchor.h"
 
 namespace tactip {
@@ -69,44 +68,6 @@ SkinMechanics SkinMechanics::From(const SkinConfig& skin, size_t n_pins) {
 }
 
 namespace {
-// The widest row of a lattice's shear stiffness: each pin's own spring plus the larger of its
-// two axes' coupling rows (`row`, entries added by magnitude).
-double WidestShearRow(const SkinMechanics& m, const PinLattice& lattice, const std::vector<std::array<double, 2>>& row) {
-  double widest = 0.0;
-  for (const auto& pin : lattice.pins) {
-    widest = std::max(widest, m.TipStiffness(pin.ring) + std::max(row[pin.index][0], row[pin.index][1]));
-  }
-  return widest;
-}
-
-// Widest row sum of a central-link lattice's shear stiffness matrix, each link's entries
-// added by magnitude: a link (e_y, e_z, k) adds k |e_a| (2 |e_y| + 2 |e_z|) to the row of
-// each of its pins' axes a (its tendon's four joints), on top of the pin's own shear spring.
-// At or above the matrix's own widest row, so a Gershgorin bound on the stiffest mode.
-double CentralRowMax(const SkinMechanics& m, const PinLattice& lattice) {
-  std::vector<std::array<double, 2>> row(lattice.size(), {0.0, 0.0});
-  for (const auto& e : lattice.neighbours) {
-    const SkinMechanics::CentralLink l = m.CentralLinkBetween(lattice.pins[e[0]], lattice.pins[e[1]]);
-    const double both = 2.0 * (std::abs(l.ey) + std::abs(l.ez));
-    for (int pin : e) {
-      row[pin][0] += l.k_N_m * std::abs(l.ey) * both;
-      row[pin][1] += l.k_N_m * std::abs(l.ez) * both;
-    }
-  }
-  return WidestShearRow(m, lattice, row);
-}
-
-// The same for the orthotropic membrane: each mode k a a^T adds k |a_r| sum |a_c| to row r.
-double OrthotropicRowMax(const SkinMechanics& m, const PinLattice& lattice) {
-  std::vector<std::array<double, 2>> row(lattice.size(), {0.0, 0.0});
-  for (const MembraneMode& mode : OrthotropicMembraneModes(m, lattice)) {
-    double sum = 0.0;
-    for (double c : mode.coef) sum += std::abs(c);
-    for (int c = 0; c < 6; ++c) row[mode.pins[c / 2]][c % 2] += mode.k_N_m * std::abs(mode.coef[c]) * sum;
-  }
-  return WidestShearRow(m, lattice, row);
-}
-
 // Dome springs over the whole lattice (every pin may carry one): the widest pin's 1 / cos^2,
 // and the widest shear row of a spring's k_n v v^T, v = (1, a, b), a = n_y / n_x, b = n_z / n_x
 // (Gershgorin: k_n |a| (1 + |a| + |b|)).
@@ -165,23 +126,6 @@ double SkinMechanics::StiffestShearOmega() const {
   return std::sqrt((k_tip_N_m + k_rim_pin_N_m + 2.0 * max_degree * k_couple_N_m + dome_shear_row_N_m) / pin_mass_kg);
 }
 
-double SkinMechanics::CentralLinkStiffness(double radial_share) const {
-  if (!(k_rock_N_m > 0.0)) return k_link_N_m;
-  return 1.0 / (1.0 / k_link_N_m + 2.0 * radial_share * radial_share / k_rock_N_m);
-}
-
-SkinMechanics::CentralLink SkinMechanics::CentralLinkBetween(const PinGeometry& a, const PinGeometry& b) const {
-  // Pins sit on the dome along their normals, so the normals' difference is the link's
-  // direction and their sum the radial direction at its midpoint (a link through the apex
-  // is radial).
-  const double ey = b.normal[1] - a.normal[1], ez = b.normal[2] - a.normal[2];
-  const double length = std::hypot(ey, ez);
-  const double ry = a.normal[1] + b.normal[1], rz = a.normal[2] + b.normal[2];
-  const double r = std::hypot(ry, rz);
-  const double radial_share = r < 1e-9 * length ? 1.0 : std::abs(ey * ry + ez * rz) / (length * r);
-  return {ey / length, ez / length, CentralLinkStiffness(radial_share)};
-}
-
 namespace {
 // The tendon springs are integrated explicitly, joint damping implicitly: the damping
 // that keeps a mode of frequency w stable at dt with a 20 % margin,
@@ -209,4 +153,5 @@ double SkinMechanics::DomeSpringDamping(double c_normal, double c_tip) const {
   if (!(dome_gain > 1.0)) return c_normal;
   return 1.0 / (1.0 / c_normal + (dome_gain - 1.0) / c_tip);
 }
+
 }  // namespace tactip
