@@ -1,67 +1,12 @@
 #pragma once
-// The TacTip skin as a pin lattice: geometry of the pins on the dome, the mechanical
-// parameters derived from materials, and the MJCF part that carries them.
+// The TacTip skin as a pin lattice: this header only includes its parts, one concern each.
 
-#include <algorithm>
-#include <array>
-#include <numbers>
-#include <optional>
-#include <string>
-#include <vector>
-
-#include "models/mjcf.h"
-#include "models/contact_config.h"
-#include "models/fingerprint_ridges.h"
-#include "models/membrane_links.h"
-#include "models/pin_lattice.h"
-#include "models/skin_config.h"
-#include "models/skin_mechanics.h"
-#include "models/skin_presets.h"
-#include "models/skin_timesteps.h"
-#include "sim/config.h"
-
-namespace tactip {
-
-/// Names of a skin's elements in the MJCF, so scenarios can look the parts up. Every name
-/// starts with `prefix`: the sensor's name and '/' in a scene of named sensors ("left/pin3"),
-/// "" in a scene of one skin.
-struct SkinNames {
-  std::string prefix;
-
-  std::string PinBody(int i) const;
-  std::string PinJoint(int i) const;
-  std::string PinShearJoint(int i, char axis) const;  ///< uncoupled skin: 'y' or 'z' shear DOF
-  std::string PinDomeSpring(int i) const;  ///< skin.normal_spring = dome: the pin's gel spring (a fixed tendon)
-  std::string PinGeom(int i) const;
-  std::string PinSite(int i) const;       ///< inner end of the pin (what the camera sees)
-  std::string PinOuterSite(int i) const;  ///< outer contact point (external markers)
-  std::string Shell() const { return prefix + "skin_shell"; }
-  /// Any other element of the skin (shell joints, tendons): `prefix` + `name`.
-  std::string Part(const std::string& name) const { return prefix + name; }
-};
-
-/// The MJCF part of a skin: a body subtree to hang under the sensor mount, tendons,
-/// and which pins carry a collision geom.
-struct SkinPart {
-  mjcf::Element body{"body"};
-  std::vector<mjcf::Element> tendons;
-  std::vector<bool> collidable;  ///< per pin
-  int n_collidable = 0;
-};
-
-/// Builds the skin part (skin.coupling chooses the shell, membrane or uncoupled lattice). `collidable[i]` says whether pin i gets a contact
-/// geom (pins that cannot touch the stimulus get none; in a membrane lattice they also get
-/// no DOFs: the skin beyond the contact anchors its neighbours). Contact bits: pins have
-/// contype 0 / conaffinity 2, so they touch only geoms with contype 2.
-/// `timestep_s` sets the floor of the membrane lattice's shear damping (its stiffest
-/// shear mode must stay stable under explicit integration of the tendon springs).
-/// Every pin carries a site at its inner end (the marker the internal camera sees) and,
-/// where `outer_site[i]`, one at its outer contact point (external markers); the overload
-/// without `outer_site` gives every pin both. Elements are named by `names`.
-SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
-                   const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site,
-                   const SkinNames& names = {});
-SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
-                   const std::vector<bool>& collidable, double timestep_s);
-
-}  // namespace tactip
+#include "models/contact_config.h"      // the `contact.` section: friction and the contact's softness
+#include "models/fingerprint_ridges.h"  // a fingerprint pin's ridge cell and the ridges' corrugation
+#include "models/membrane_links.h"      // a membrane lattice's links and their shear-row bounds
+#include "models/pin_lattice.h"         // the pins on the dome and their neighbours
+#include "models/skin_config.h"         // the `skin.` section: keys, derived quantities, rules
+#include "models/skin_mechanics.h"      // stiffnesses, masses and damping from the materials
+#include "models/skin_part.h"           // the MJCF part: BuildSkin, SkinPart, SkinNames
+#include "models/skin_presets.h"        // the `--skin NAME` presets
+#include "models/skin_timesteps.h"      // the skins' validated steps

@@ -1,8 +1,13 @@
-#include "models/skin.h"
+#include "models/skin_part.h"
+
+#include <array>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "models/membrane_elements.h"
+#include "models/skin_mechanics.h"
 #include "sim/pressing_axis.h"
 
 namespace tactip {
@@ -44,6 +49,7 @@ struct PinBodyPlan {
 void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
   const SkinConfig& skin = plan.skin;
   const SkinMechanics& mech = plan.mech;
+  // The name, the mechanics as a comment, and the membrane's inertia.
   shell.Set("name", plan.names.Shell());
   shell.Comment(fmt::format("{} skin ({} coupling): {} pins, k_n {:.3g} N/m, k_shear {:.3g} N/m per pin, k_bend {:.3g} "
                             "N/m, membrane E*t {:.3g} N/m, k_rock {:.3g} N/m, k_tip {:.3g} N/m, k_couple {:.3g} N/m, "
@@ -55,6 +61,7 @@ void AddShell(mjcf::Element& shell, const PinBodyPlan& plan, size_t n_pins) {
                             mech.k_rim_N_m));
   shell.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.shell_mass_kg)
       .Set("diaginertia", std::vector<double>{1e-7, 1e-7, 1e-7});
+  // The in-plane slide joints (shell mode only).
   if (!plan.shell_mode) return;
   for (const char* axis : {"y", "z"}) {
     shell.Add("joint")
@@ -75,6 +82,7 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
   const SkinMechanics& mech = plan.mech;
   const SkinNames& names = plan.names;
   const double rb = plan.rb, rc = plan.rc;
+  // The body at the contact sphere's centre, and its mass.
   mjcf::Element& b = shell.Add("body");
   b.Set("name", names.PinBody(i)).Set("pos", std::vector<double>{rb * nrm[0], rb * nrm[1], rb * nrm[2]});
   b.Add("inertial").Set("pos", std::vector<double>{0, 0, 0}).Set("mass", mech.pin_mass_kg)
@@ -101,6 +109,7 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
     }
   }
   if (plan.collidable[i]) {
+    // The contact patch.
     const ContactConfig& contact = plan.contact;
     b.Add("geom")
         .Set("name", names.PinGeom(i))
@@ -114,6 +123,7 @@ void AddPinBody(mjcf::Element& shell, const PinBodyPlan& plan, const PinGeometry
         .Set("solimp", contact.Solimp())
         .Set("rgba", std::vector<double>{0.9, 0.9, 0.9, 1});
   }
+  // The marker sites: the inner end, and the outer contact point where asked for.
   const double inner = plan.r_marker - rb;
   b.Add("site").Set("name", names.PinSite(i)).Set("pos", std::vector<double>{inner * nrm[0], inner * nrm[1], inner * nrm[2]})
       .Set("size", std::vector<double>{0.0005});
@@ -165,6 +175,7 @@ std::vector<mjcf::Element> OrthotropicTendons(const PinBodyPlan& plan, const Pin
 std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLattice& lattice) {
   std::vector<mjcf::Element> tendons;
   const SkinNames& names = plan.names;
+  // A spring between two joints, attached to each only where that joint exists.
   auto spring = [&](const std::string& name, const std::string& j0, bool m0, const std::string& j1, bool m1,
                     double k) {
     if ((!m0 && !m1) || k <= 0.0) return;
@@ -176,6 +187,7 @@ std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLat
   };
   if (plan.skin.coupling == "none") return tendons;
   const bool membrane = plan.skin.coupling == "membrane";
+  // Each link's bending spring and, in a membrane lattice, its shear link(s).
   for (const auto& e : lattice.neighbours) {
     const bool m0 = plan.normal_dof[e[0]], m1 = plan.normal_dof[e[1]];
     spring(fmt::format("bend_{}_{}", e[0], e[1]), names.PinJoint(e[0]), m0, names.PinJoint(e[1]), m1,
@@ -190,6 +202,7 @@ std::vector<mjcf::Element> CouplingTendons(const PinBodyPlan& plan, const PinLat
              names.PinShearJoint(e[1], axis), true, plan.mech.k_couple_N_m);
     }
   }
+  // The orthotropic membrane couples through its triangles instead.
   if (membrane && plan.mech.orthotropic_links) {
     for (auto& t : OrthotropicTendons(plan, lattice)) tendons.push_back(std::move(t));
   }
@@ -210,6 +223,7 @@ mjcf::Element DomeSpringTendon(const PinBodyPlan& plan, const PinGeometry& pin) 
   return t;
 }
 
+// The dome springs of every pin with a normal DOF (none with axial springs).
 std::vector<mjcf::Element> DomeSpringTendons(const PinBodyPlan& plan, const PinLattice& lattice) {
   std::vector<mjcf::Element> tendons;
   if (!plan.skin.DomeSprings()) return tendons;
@@ -224,6 +238,7 @@ std::vector<mjcf::Element> DomeSpringTendons(const PinBodyPlan& plan, const PinL
 SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const PinLattice& lattice,
                    const std::vector<bool>& collidable, double timestep_s, const std::vector<bool>& outer_site,
                    const SkinNames& names) {
+  // The mechanics, and the radii of the contact spheres' centres.
   const SkinMechanics mech = SkinMechanics::From(skin, lattice);
   const double R = skin.radius_mm * 1e-3;
   const double R_out = skin.OuterRadiusMm() * 1e-3;
@@ -235,6 +250,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
   plan.r_marker = R - (skin.thickness_mm + skin.pin_length_mm) * 1e-3;
   if (skin.pattern == "fingerprint-v1") plan.r_marker = R - skin.thickness_mm * 1e-3;  // pins reach out into the ridges
   if (skin.pattern == "fingerprint-v2") plan.r_marker = R_out - skin.pin_length_mm * 1e-3;  // through the skin at the peak
+  // The joints' damping (the membrane lattice's with its floors at this step).
   plan.c_tip = membrane ? mech.TipDamping(timestep_s) : mech.tip_damping_Ns_m;
   plan.c_normal = membrane ? mech.NormalDamping(timestep_s) : mech.pin_damping_Ns_m;
   plan.shell_mode = skin.coupling == "shell";
@@ -255,6 +271,7 @@ SkinPart BuildSkin(const SkinConfig& skin, const ContactConfig& contact, const P
     AddPinBody(part.body, plan, pin);
     if (collidable[pin.index]) ++part.n_collidable;
   }
+  // The tendons: coupling springs, then dome springs.
   part.tendons = CouplingTendons(plan, lattice);
   for (auto& t : DomeSpringTendons(plan, lattice)) part.tendons.push_back(std::move(t));
   return part;
