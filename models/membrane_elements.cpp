@@ -12,21 +12,6 @@ namespace tactip {
 namespace {
 constexpr double kRubberPoisson = 0.5;
 
-// Developed over projected length of one period of the ridge profile.
-double RidgeLengthRatio(const SkinConfig& skin) {
-  const double h = skin.ridge_height_mm, s = skin.ridge_spacing_mm;
-  if (skin.ridge_shape == "square") return 1.0 + 2.0 * h / s;  // up, across, down
-  // Sine of amplitude h / 2: the mean of sqrt(1 + (k cos x)^2) over a period, k = pi h / s.
-  const double k = std::numbers::pi * h / s;
-  constexpr int kSamples = 2048;
-  double sum = 0.0;
-  for (int i = 0; i < kSamples; ++i) {
-    const double c = std::cos(2.0 * std::numbers::pi * (i + 0.5) / kSamples);
-    sum += std::sqrt(1.0 + k * k * c * c);
-  }
-  return sum / kSamples;
-}
-
 using Vec2 = std::array<double, 2>;
 
 // A pin's place in the arc-length layout, (y, z) in the sensor's plane.
@@ -107,13 +92,6 @@ void StitchBand(const PinLattice& lattice, const std::vector<int>& inner, const 
   }
 }
 }  // namespace
-
-Corrugation Corrugation::Of(const SkinConfig& skin) {
-  if (!skin.Fingerprint()) return {};
-  const double a_over_t = 0.5 * skin.ridge_height_mm / skin.thickness_mm;
-  const double nu = kRubberPoisson;
-  return {1.0 + 6.0 * (1.0 - nu * nu) * a_over_t * a_over_t, RidgeLengthRatio(skin)};
-}
 
 std::vector<std::array<int, 3>> RingTriangles(const PinLattice& lattice) {
   const std::vector<std::vector<int>> rings = Rings(lattice);

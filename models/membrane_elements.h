@@ -7,7 +7,8 @@
 #include <array>
 #include <vector>
 
-#include "models/skin.h"
+#include "models/pin_lattice.h"
+#include "models/skin_mechanics.h"
 
 namespace tactip {
 
