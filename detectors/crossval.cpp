@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -155,7 +157,7 @@ void ForEachFold(int folds, const std::function<void(int)>& run_fold) {
 }  // namespace
 
 CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCandidate>& grid,
-                           const CvFitPredict& fit) {
+                           const CvFitPredict& fit, const std::function<void(const std::string&)>& progress) {
   if (grid.empty()) throw InputError("hyperparameter grid is empty");
   if (k < 2) throw InputError("cv_folds = " + std::to_string(k) + ": must be >= 2");
   const int n = static_cast<int>(ts.y.size());
@@ -181,9 +183,17 @@ CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCan
   report.folds = folds;
   const std::vector<int> fold = GroupFolds(ts.group, folds);
 
-  // Out-of-fold predictions per candidate.
+  // Out-of-fold predictions per candidate, each fold announced as it finishes.
   std::vector<std::vector<int>> oof(grid.size(), std::vector<int>(n, 0));
-  ForEachFold(folds, [&](int f) { PredictFold(ts, fold, f, grid, fit, oof); });
+  std::mutex progress_mu;
+  int folds_done = 0;
+  ForEachFold(folds, [&](int f) {
+    PredictFold(ts, fold, f, grid, fit, oof);
+    if (!progress) return;
+    std::lock_guard lock(progress_mu);
+    progress("cross-validation: fold " + std::to_string(f + 1) + " done (" + std::to_string(++folds_done) + "/" +
+             std::to_string(folds) + " folds, " + std::to_string(grid.size()) + " candidate(s) each)");
+  });
 
   // Score every candidate on the pooled out-of-fold predictions; first best wins.
   report.best_f1 = -1.0;
@@ -195,6 +205,13 @@ CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCan
       report.best_c = grid[c].c;
       report.best_gamma = grid[c].gamma;
     }
+  }
+  if (progress) {
+    char gamma[48] = "", line[160];
+    if (report.best_gamma > 0.0) std::snprintf(gamma, sizeof gamma, ", gamma %.4g", report.best_gamma);
+    std::snprintf(line, sizeof line, "cross-validation: best C %g%s, pooled F1 %.3f; fitting it on all %d rows",
+                  report.best_c, gamma, report.best_f1, n);
+    progress(line);
   }
   return report;
 }

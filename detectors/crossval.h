@@ -75,9 +75,10 @@ using CvFitPredict = std::function<std::vector<std::vector<int>>(
 /// parallel (at most min(folds, hardware threads)); the result does not depend on the thread
 /// count. With a single candidate and fewer than 2 runs CV is skipped (best_f1 = NaN). Throws
 /// InputError if k < 2 or the training set has fewer than 2 runs while the grid has
-/// several candidates, and propagates errors of `fit`.
+/// several candidates, and propagates errors of `fit`. `progress`, if set, hears of each fold
+/// as it finishes and of the chosen candidate (from any thread, one call at a time).
 CvReport GroupedGridSearch(const TrainingSet& ts, int k, const std::vector<CvCandidate>& grid,
-                           const CvFitPredict& fit);
+                           const CvFitPredict& fit, const std::function<void(const std::string&)>& progress = {});
 
 /// Checks a training set before fitting: consistent sizes, labels in {0, 1}, at least one
 /// feature column, finite features, and both classes present; throws InputError

@@ -117,6 +117,9 @@ struct TrainOptions {
   int cv_folds = 4;              ///< folds of the grouped cross-validation (runs never split)
   std::vector<double> c_grid = {0.1, 1.0, 10.0, 100.0};      ///< SVM / logistic C candidates
   std::vector<double> gamma_scale_grid = {0.0625, 0.25, 1.0};  ///< RBF gamma candidates x 1/dim
+  /// Progress of the training (a fold of the cross-validation done, the final fit begun);
+  /// called from any thread, one line at a time. Empty: silent.
+  std::function<void(const std::string&)> progress;
 };
 
 /// Feature matrix with labels and run groups, one row per selected frame.

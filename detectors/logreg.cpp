@@ -226,7 +226,7 @@ std::unique_ptr<LogRegDetector> LogRegDetector::Train(const TrainingSet& ts, con
   };
   const auto predict = [](const ::model* m, const feature_node* row) { return ::predict(m, row); };
   const CvReport report =
-      GroupedGridSearch(ts, opts.cv_folds, grid, FitAndPredictEachCandidate<LinearRows>(train, predict));
+      GroupedGridSearch(ts, opts.cv_folds, grid, FitAndPredictEachCandidate<LinearRows>(train, predict), opts.progress);
   auto [standardizer, text] =
       RefitOnEveryRow<LinearRows>(ts, {report.best_c, 0.0}, train, [](const ::model* m) { return ModelText(m); });
   auto impl = MakeImpl(opts.features, report.best_c, std::move(standardizer), std::move(text), "(trained logreg)", 0);

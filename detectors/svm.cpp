@@ -364,7 +364,7 @@ std::unique_ptr<SvmDetector> SvmDetector::Train(const TrainingSet& ts, Kernel ke
   };
   const auto predict = [](const svm_model* m, const svm_node* row) { return svm_predict(m, row); };
   const CvReport report =
-      GroupedGridSearch(ts, opts.cv_folds, grid, FitAndPredictEachCandidate<SvmRows>(train, predict));
+      GroupedGridSearch(ts, opts.cv_folds, grid, FitAndPredictEachCandidate<SvmRows>(train, predict), opts.progress);
   auto [standardizer, text] = RefitOnEveryRow<SvmRows>(ts, {report.best_c, report.best_gamma}, train,
                                                        [](const svm_model* m) { return ModelText(m); });
   auto impl = MakeImpl(kernel, opts.features, report.best_c, report.best_gamma, std::move(standardizer),

@@ -235,6 +235,22 @@ TEST(GroupedGridSearchTest, StandardisesOnTrainingRowsAndPoolsOutOfFoldPredictio
   ExpectInputError([&] { GroupedGridSearch(ts, 1, {{1.0, 0.0}}, fit); }, {"cv_folds = 1"});
 }
 
+TEST(GroupedGridSearchTest, ProgressHearsOfEveryFoldAndOfTheChoice) {
+  const TrainingSet& ts = TrainSet();
+  const CvFitPredict fit = [](const Eigen::MatrixXf&, const std::vector<int>&, const Eigen::MatrixXf& x_test,
+                              const std::vector<CvCandidate>& grid) {
+    return std::vector<std::vector<int>>(grid.size(), std::vector<int>(x_test.rows(), 1));
+  };
+  std::vector<std::string> lines;  // called one at a time (the search serialises it)
+  GroupedGridSearch(ts, 3, {{1.0, 0.0}, {2.0, 0.5}}, fit, [&](const std::string& line) { lines.push_back(line); });
+  ASSERT_EQ(lines.size(), 4u);
+  for (int f = 0; f < 3; ++f) {
+    EXPECT_NE(lines[f].find("/3 folds, 2 candidate(s) each"), std::string::npos) << lines[f];
+  }
+  EXPECT_NE(lines[3].find("best C 1, pooled F1"), std::string::npos) << lines[3];
+  EXPECT_NE(lines[3].find("fitting it on all " + std::to_string(ts.y.size()) + " rows"), std::string::npos);
+}
+
 TEST(SvmDetectorTest, RbfReachesHighF1OnHeldOutRuns) {
   const auto det = SvmDetector::Train(TrainSet(), SvmDetector::Kernel::kRbf, Options());
   EXPECT_EQ(det->name(), "svm-rbf");

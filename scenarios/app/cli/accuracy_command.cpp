@@ -12,6 +12,7 @@
 #include "scenarios/app/cli/output_checks.h"
 #include "scenarios/figures/plot.h"
 #include "sim/base/files.h"
+#include "sim/base/progress.h"
 
 namespace tactip::cli {
 
@@ -42,7 +43,7 @@ void WriteOutputs(const AccuracyReport& report, const AccuracyArgs& a) {
   const std::filesystem::path dir(a.out);
   const std::string csv = (dir / "accuracy.csv").string();
   WriteFileAtomic(csv, AccuracyCsv(report));
-  std::fprintf(stderr, "wrote %s\n", csv.c_str());
+  ProgressF("wrote %s\n", csv.c_str());
   if (a.no_plots) return;
   ParetoPlot p;
   p.csv = csv;
@@ -50,7 +51,7 @@ void WriteOutputs(const AccuracyReport& report, const AccuracyArgs& a) {
   p.title = "tactip accuracy " + report.scene + ": error against run time";
   p.out_png = (dir / "accuracy.png").string();
   PlotPareto(p);
-  std::fprintf(stderr, "wrote %s\n", p.out_png.c_str());
+  ProgressF("wrote %s\n", p.out_png.c_str());
 }
 
 int RunAccuracyCommand(const AccuracyArgs& a, const std::atomic<bool>* stop) {
@@ -76,10 +77,10 @@ int RunAccuracyCommand(const AccuracyArgs& a, const std::atomic<bool>* stop) {
   if (!a.out.empty() && !a.no_plots) CheckPlotting();
   if (!a.quiet) {
     o.progress = [](int done, int total, const AccuracyRow& row) {
-      std::fprintf(stderr, "[%d/%d] %s: %s (%.3f s wall per simulated s)\n", done, total, row.setting.label.c_str(),
+      ProgressF("[%d/%d] %s: %s (%.3f s wall per simulated s)\n", done, total, row.setting.label.c_str(),
                    row.outcome.c_str(), row.wall_s_per_sim_s);
     };
-    std::fprintf(stderr, "accuracy of %s: %d run(s) per setting, camera noise off\n", scene.c_str(), a.runs);
+    ProgressF("accuracy of %s: %d run(s) per setting, camera noise off\n", scene.c_str(), a.runs);
   }
   const AccuracyReport report = RunAccuracy(o);
   std::printf("%s", FormatAccuracyTable(report).c_str());

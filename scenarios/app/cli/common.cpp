@@ -12,6 +12,7 @@
 
 #include "models/skin.h"
 #include "scenarios/app/cli/option_checks.h"
+#include "sim/base/progress.h"
 
 namespace tactip::cli {
 
@@ -72,7 +73,7 @@ namespace {
 void ReportTimestep(const std::optional<TimestepChoice>& choice) {
   if (!choice) return;
   const TimestepChoice& t = *choice;
-  std::fprintf(stderr,
+  ProgressF(
                "auto-timestep: sim.timestep_s = %.6g s (bound %.6g s by %s; largest stable step %.6g s, set by %s)\n",
                t.timestep_s, t.bound_s, t.binding.c_str(), t.stable_s, t.stable_mode.c_str());
 }
@@ -197,7 +198,7 @@ void NoteFlaggedRuns(const DatasetReader& reader, const std::string& path, const
   const std::vector<int> flagged = FlaggedRuns(reader, runs);
   if (flagged.empty()) return;
   const size_t read = runs.empty() ? reader.run_indices().size() : runs.size();
-  std::fprintf(stderr,
+  ProgressF(
                "tactip: note: %zu of the %zu run(s) read from '%s' are flagged by run health (health_ok = 0): "
                "run(s) %s; their ground truth is not to be trusted ('tactip info %s' gives the reasons)\n",
                flagged.size(), read, path.c_str(), fmt::format("{}", fmt::join(flagged, ", ")).c_str(), path.c_str());

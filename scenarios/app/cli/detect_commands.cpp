@@ -25,6 +25,7 @@
 #include "scenarios/studies/speed/speed.h"
 #include "sensors/dataset.h"
 #include "sim/base/files.h"
+#include "sim/base/progress.h"
 
 namespace tactip::cli {
 
@@ -133,13 +134,13 @@ int RunSpeedStudy(const std::vector<std::string>& scenes, const std::vector<std:
                   const std::string& out_dir, std::uint64_t seed) {
   ChooseSpeedScenes(scenes);  // an unknown scene is named before anything runs
   PrepareOutputFolder(out_dir, "speed.csv");
-  std::fprintf(stderr, "bench --speed: one run per scene on one core, every step timed\n");
+  ProgressF("bench --speed: one run per scene on one core, every step timed\n");
   const std::vector<SpeedRow> rows = MeasureSpeed(scenes, sets, seed);
   std::printf("%s", FormatSpeedTable(rows).c_str());
   if (!out_dir.empty()) {
     const std::string path = (std::filesystem::path(out_dir) / "speed.csv").string();
     WriteFileAtomic(path, SpeedCsv(rows));
-    std::fprintf(stderr, "wrote %s\n", path.c_str());
+    ProgressF("wrote %s\n", path.c_str());
   }
   return 0;
 }
@@ -181,11 +182,11 @@ std::unique_ptr<Detector> TrainDetector(const std::string& kind, const std::vect
   const TrainingSet ts = BuildTrainingSet(data, opts);
   long slip = 0;
   for (int y : ts.y) slip += y;
-  std::fprintf(stderr, "training set: %zu frames (%ld slip) from %zu runs\n", ts.y.size(), slip, data.size());
+  ProgressF("training set: %zu frames (%ld slip) from %zu runs\n", ts.y.size(), slip, data.size());
   if (kind == "logreg") return LogRegDetector::Train(ts, opts);
   auto svm = SvmDetector::Train(ts, kind == "svm-rbf" ? SvmDetector::Kernel::kRbf : SvmDetector::Kernel::kLinear, opts);
   const auto& cv = svm->cv_report();
-  std::fprintf(stderr, "grouped %d-fold CV: best C %g, gamma %g, F1 %.4f\n", opts.cv_folds, cv.best_c, cv.best_gamma,
+  ProgressF("grouped %d-fold CV: best C %g, gamma %g, F1 %.4f\n", opts.cv_folds, cv.best_c, cv.best_gamma,
                cv.best_f1);
   return svm;
 }
@@ -193,7 +194,8 @@ std::unique_ptr<Detector> TrainDetector(const std::string& kind, const std::vect
 // tactip train: the model from runs of a dataset, saved to --out.
 int RunTrain(const DetectArgs& s, const CLI::App* train, const std::vector<int>& runs) {
   CheckOutputsAreNotInputs({{"--out", s.out}}, {{"--data", s.data}});
-  const TrainOptions opts = s.train.Options();
+  TrainOptions opts = s.train.Options();
+  opts.progress = [](const std::string& line) { Progress(line); };
   CheckWritableLocation(s.out);
   const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame, s.sensor, ParsePinSource(s.pins));
   NoteFlaggedRuns(s.data, runs);
@@ -201,7 +203,7 @@ int RunTrain(const DetectArgs& s, const CLI::App* train, const std::vector<int>&
   if (kind != "threshold") s.train.CheckFolds(train, data.size());  // only the others cross-validate
   const std::unique_ptr<Detector> det = TrainDetector(kind, data, opts);
   det->Save(s.out);
-  std::fprintf(stderr, "wrote %s (%s)\n", s.out.c_str(), det->name().c_str());
+  ProgressF("wrote %s (%s)\n", s.out.c_str(), det->name().c_str());
   return 0;
 }
 
@@ -228,7 +230,7 @@ int RunDetect(const DetectArgs& s, const std::vector<int>& runs) {
   size_t frames = 0;
   for (const auto& r : data) frames += r.frames.size();
   WriteFileAtomic(s.out, DecisionsCsv(*det, data, incipient, s.contact_measure));
-  std::fprintf(stderr, "wrote %s: %zu frames of %zu run(s) through %s\n", s.out.c_str(), frames, data.size(),
+  ProgressF("wrote %s: %zu frames of %zu run(s) through %s\n", s.out.c_str(), frames, data.size(),
                det->name().c_str());
   return 0;
 }
@@ -246,7 +248,7 @@ int RunSlipBench(const DetectArgs& s, const CLI::App* bench, const std::atomic<b
   o.score_onset_frame = s.train.score_onset_frame;
   o.sensor = s.sensor;
   o.stop = stop;
-  o.log = [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); };
+  o.log = [](const std::string& line) { ProgressF("bench: %s\n", line.c_str()); };
   CheckOutputsAreNotInputs(FilesInFolder("--out", o.out_dir, BenchOutputFiles(o)),
                            {{"--dataset", o.dataset}, {"--config", s.config}});
   const size_t runs = o.dataset.empty() ? static_cast<size_t>(o.runs) : DatasetReader(o.dataset).run_indices().size();

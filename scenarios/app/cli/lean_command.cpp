@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "sim/base/files.h"
+#include "sim/base/progress.h"
 
 namespace tactip::cli {
 
@@ -14,15 +15,15 @@ int RunLeanStudy(const std::vector<std::string>& scenes, const LeanOptions& opti
     CreateOutputFolder(out_dir);
     CheckWritableLocation(path);
   }
-  std::fprintf(stderr, "bench --lean: %zu scene(s) x %zu variants, one core, every step timed\n", chosen.size(),
+  ProgressF("bench --lean: %zu scene(s) x %zu variants, one core, every step timed\n", chosen.size(),
                LeanVariants().size());
   LeanOptions o = options;
-  o.progress = [](const std::string& line) { std::fprintf(stderr, "bench --lean: %s\n", line.c_str()); };
+  o.progress = [](const std::string& line) { ProgressF("bench --lean: %s\n", line.c_str()); };
   const std::vector<LeanRow> rows = MeasureLean(chosen, o);
   std::printf("%s", FormatLeanTable(rows).c_str());
   if (!path.empty()) {
     WriteFileAtomic(path, LeanCsv(rows));
-    std::fprintf(stderr, "wrote %s\n", path.c_str());
+    ProgressF("wrote %s\n", path.c_str());
   }
   return 0;
 }

@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "scenarios/app/viewer/view_command.h"
 #include "scenarios/rail/rail.h"
 #include "sim/base/errors.h"
+#include "sim/base/progress.h"
 #include "tactip/version.h"
 
 namespace {
@@ -95,5 +97,11 @@ int main(int argc, char** argv) {
       std::signal(SIGTERM, OnSignal);
     }
   }
+  // A long step never leaves the terminal silent: after 10 s without a progress line the
+  // heartbeat says what is still running (not with --quiet, nor in the viewer's window).
+  bool quiet = app.got_subcommand("view");
+  for (int i = 1; i < argc; ++i) quiet = quiet || std::string(argv[i]) == "--quiet";
+  std::unique_ptr<tactip::Heartbeat> heartbeat;
+  if (!quiet) heartbeat = std::make_unique<tactip::Heartbeat>("tactip");
   return Dispatch(runners);
 }

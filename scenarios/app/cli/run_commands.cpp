@@ -16,6 +16,7 @@
 #include "scenarios/app/cli/output_checks.h"
 #include "scenarios/incipient_stop/stop_trials.h"
 #include "scenarios/rail_catch/catch_report.h"
+#include "sim/base/progress.h"
 #include "sim/config.h"
 #include "sim/base/files.h"
 
@@ -90,7 +91,7 @@ void WriteTrialOutputs(const std::string& out, const std::vector<std::pair<std::
     if (!out.empty()) WriteFileAtomic((std::filesystem::path(out) / name).string(), text);
     names += (names.empty() ? "" : ", ") + name;
   }
-  std::fprintf(stderr, "done: %zu trial(s) in %.1f s wall%s\n", trials, wall_s,
+  ProgressF("done: %zu trial(s) in %.1f s wall%s\n", trials, wall_s,
                out.empty() ? "" : ("; wrote " + names + " in " + out).c_str());
 }
 
@@ -132,7 +133,7 @@ int RunRailCatch(const CatchArgs& a, const std::atomic<bool>* stop) {
   o.stop = stop;
   if (!a.trial.quiet) {
     o.progress = [](const CatchTrial& t) {
-      std::fprintf(stderr, "%s %g mm/s trial %d: %s, slip %.1f mm, declared %s s after onset %s s\n",
+      ProgressF("%s %g mm/s trial %d: %s, slip %.1f mm, declared %s s after onset %s s\n",
                    t.stimulus.c_str(), t.speed_mm_s, t.trial, ToString(t.outcome).c_str(), t.slip_distance_mm,
                    Fmt(t.declared_s).c_str(), Fmt(t.onset_s).c_str());
     };
@@ -216,7 +217,7 @@ int RunIncipientStop(const StopArgs& a, const std::atomic<bool>* stop) {
   o.stop = stop;
   if (!a.trial.quiet) {
     o.progress = [](const StopTrial& t) {
-      std::fprintf(stderr, "%s trial %d: %s, stop %s s, gross onset %s s, fall %s s\n", t.skin.c_str(), t.trial,
+      ProgressF("%s trial %d: %s, stop %s s, gross onset %s s, fall %s s\n", t.skin.c_str(), t.trial,
                    ToString(t.outcome).c_str(), Fmt(t.stop_s).c_str(), Fmt(t.onset_s).c_str(), Fmt(t.fall_s).c_str());
     };
   }

@@ -12,6 +12,7 @@
 #include "scenarios/app/cli/output_checks.h"
 #include "sensors/dataset_merge.h"
 #include "sim/base/files.h"
+#include "sim/base/progress.h"
 
 namespace tactip::cli {
 
@@ -65,7 +66,7 @@ int RunExport(const Scenario& scenario, const ConfigSource& src, const std::stri
     std::printf("%s", xml.c_str());
   } else {
     WriteFileAtomic(out, xml);
-    std::fprintf(stderr, "wrote %s (%zu bytes)\n", out.c_str(), xml.size());
+    ProgressF("wrote %s (%zu bytes)\n", out.c_str(), xml.size());
   }
   return 0;
 }
@@ -73,7 +74,7 @@ int RunExport(const Scenario& scenario, const ConfigSource& src, const std::stri
 // One progress line per finished run.
 void PrintRunProgress(int done, int total, int idx, const RailRunSummary& s) {
   const std::string health = s.health.ok ? "health ok" : "UNHEALTHY: " + s.health.reason;
-  std::fprintf(stderr,
+  ProgressF(
                "[%d/%d] run %d: incipient %s s, onset %s s, fall %s s, Coulomb %s s, %.1f s simulated in %.1f s; "
                "%s%s\n",
                done, total, idx, Fmt(s.incipient_onset_s).c_str(), Fmt(s.gross_slip_onset_s).c_str(),
@@ -98,14 +99,14 @@ int RunGenerate(const Scenario& scenario, const ConfigSource& src, const Scenari
   if (!a.quiet) {
     opts.progress = PrintRunProgress;
     if (opts.shard) {
-      std::fprintf(stderr, "generating shard %s: %s %s into %s\n", opts.shard->text().c_str(),
+      ProgressF("generating shard %s: %s %s into %s\n", opts.shard->text().c_str(),
                    scenario.name().c_str(), opts.shard->runs_text().c_str(), opts.out_path.c_str());
     } else {
-      std::fprintf(stderr, "generating %d %s run(s) into %s\n", a.runs, scenario.name().c_str(), opts.out_path.c_str());
+      ProgressF("generating %d %s run(s) into %s\n", a.runs, scenario.name().c_str(), opts.out_path.c_str());
     }
   }
   const GenerateResult r = scenario.Generate(src, opts);
-  std::fprintf(stderr, "done: %d runs, %.1f s simulated in %.1f s wall (%.1fx real time overall)\n", r.runs,
+  ProgressF("done: %d runs, %.1f s simulated in %.1f s wall (%.1fx real time overall)\n", r.runs,
                r.sim_time_s, r.wall_time_s, r.sim_time_s / r.wall_time_s);
   PrintDatasetSummary(opts.out_path, false);
   return 0;
@@ -117,11 +118,11 @@ int RunMerge(const ScenarioArgs& a, const std::atomic<bool>* stop) {
   opts.stop = stop;
   if (!a.quiet) {
     opts.progress = [](const std::string& path, const ShardSpec& s) {
-      std::fprintf(stderr, "merged %s: shard %s, %s\n", path.c_str(), s.text().c_str(), s.runs_text().c_str());
+      ProgressF("merged %s: shard %s, %s\n", path.c_str(), s.text().c_str(), s.runs_text().c_str());
     };
   }
   const MergeResult r = MergeShards(a.merge_inputs, a.out, opts);
-  std::fprintf(stderr, "done: %d runs from %d shard file(s) into %s\n", r.runs, r.shards, a.out.c_str());
+  ProgressF("done: %d runs from %d shard file(s) into %s\n", r.runs, r.shards, a.out.c_str());
   PrintDatasetSummary(a.out, false);
   return 0;
 }

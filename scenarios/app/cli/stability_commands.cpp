@@ -10,6 +10,7 @@
 #include "scenarios/app/cli/option_checks.h"
 #include "scenarios/app/cli/output_checks.h"
 #include "scenarios/studies/stability/stability_suite.h"
+#include "sim/base/progress.h"
 #include "sim/config.h"
 #include "sim/base/files.h"
 
@@ -50,10 +51,10 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   if (!a.quiet) {
     std::string with;
     for (const auto& kv : a.sets) with += " " + kv;
-    std::fprintf(stderr, "stability: %zu case(s) on the short protocol (noise off, 15 mm lift, 1 mm/s retraction)%s%s\n",
+    ProgressF("stability: %zu case(s) on the short protocol (noise off, 15 mm lift, 1 mm/s retraction)%s%s\n",
                  total, with.empty() ? "" : ", every case with --set", with.c_str());
     o.progress = [](int done, int n, const StabilityResult& r) {
-      std::fprintf(stderr, "[%d/%d] %s: %s (%.1f s)\n", done, n, r.c->name.c_str(), OutcomeName(r.outcome),
+      ProgressF("[%d/%d] %s: %s (%.1f s)\n", done, n, r.c->name.c_str(), OutcomeName(r.outcome),
                    r.wall_time_s);
     };
   }
@@ -67,9 +68,9 @@ int RunStability(const StabilityArgs& a, const std::atomic<bool>* stop) {
   for (const auto& r : results) {
     if (r.outcome != CaseOutcome::kFailed) continue;
     failed = true;
-    std::fprintf(stderr, "tactip: stability case %s FAILED: %s\n", r.c->name.c_str(), r.message.c_str());
+    ProgressF("tactip: stability case %s FAILED: %s\n", r.c->name.c_str(), r.message.c_str());
   }
-  std::fprintf(stderr, "done: %zu case(s) in %.1f s wall%s%s\n", results.size(), wall,
+  ProgressF("done: %zu case(s) in %.1f s wall%s%s\n", results.size(), wall,
                csv_path.empty() ? "" : "; wrote ", csv_path.c_str());
   return failed ? 1 : 0;
 }

@@ -18,6 +18,7 @@
 #include "sensors/slip_data.h"
 #include "scenarios/studies/sweeps/sweep.h"
 #include "sim/base/files.h"
+#include "sim/base/progress.h"
 
 namespace tactip::cli {
 
@@ -53,7 +54,7 @@ DomeCheckOptions DomeOptions(const ConfigArgs& c, const std::vector<std::string>
 // Runs one dome check and prints it; true when it passes.
 bool RunDome(const DomeCheckOptions& d, const DomeCriteria& k, const std::string& title) {
   const SkinConfig& skin = d.rig.skin;
-  std::fprintf(stderr, "validate: shearing the %s lattice (gel %.4g kPa in shear) to gross slip\n",
+  ProgressF("validate: shearing the %s lattice (gel %.4g kPa in shear) to gross slip\n",
                skin.pattern.c_str(), skin.GelShearModulusPa() * 1e-3);
   const DomeCheck dc = RunDomeCheck(d);
   std::printf("dome under rising tangential load, %s (%s, %g mm skin of %g MPa on a gel of %.4g kPa in shear)\n%s",
@@ -84,7 +85,7 @@ int RunContactChecks(const ConfigArgs& c) {
   o.rig.sim = rail.sim;
   o.rig.skin = rail.skin;
   o.rig.contact = rail.contact;
-  std::fprintf(stderr, "validate: pressing an uncoupled %s lattice and shearing it past gross slip\n",
+  ProgressF("validate: pressing an uncoupled %s lattice and shearing it past gross slip\n",
                rail.skin.pattern.c_str());
   const BrushCheck bc = RunBrushCheck(o);
   constexpr double kAgreement = 0.98, kLoadError = 0.03;
@@ -94,7 +95,7 @@ int RunContactChecks(const ConfigArgs& c) {
   configured.judge_band = false;
   ok = RunDome(continuum_dome, continuum, "continuum-regime lattice, its skin softened to lambda = a/3") && ok;
   ok = RunDome(configured_dome, configured, "configured lattice") && ok;
-  if (!ok) std::fprintf(stderr, "tactip: validation failed\n");
+  if (!ok) ProgressF("tactip: validation failed\n");
   return ok ? 0 : 1;
 }
 
@@ -108,10 +109,10 @@ int RunMarkerCheck(const ConfigArgs& c) {
   o.rig.contact = rail.contact;
   o.camera = rail.sensor;
   const bool real_like = rail.skin.pattern == "smooth" && PinLattice::Build(rail.skin).size() == 127;
-  std::fprintf(stderr, "validate: pressing the skin onto a flat plate at 1, 2, 3 and 4 mm\n");
+  ProgressF("validate: pressing the skin onto a flat plate at 1, 2, 3 and 4 mm\n");
   const FlatPressCheck check = RunFlatPressCheck(o);
   std::printf("%s", FormatFlatPressCheck(check, real_like ? "" : "; the real figures are a 127-pin smooth TacTip's").c_str());
-  if (!check.ok) std::fprintf(stderr, "tactip: validation failed\n");
+  if (!check.ok) ProgressF("tactip: validation failed\n");
   return check.ok ? 0 : 1;
 }
 
@@ -175,7 +176,7 @@ int RunTrackingReport(const StudyArgs& a) {
 void PrintDesignProgress(int done, int total, const SweepDesignResult& r) {
   std::string d;
   for (const auto& [k, v] : r.design) d += (d.empty() ? "" : " ") + k + "=" + v;
-  std::fprintf(stderr,
+  ProgressF(
                "[%d/%d] %s: %d pins, incipient in %d/%d runs, lead %s +- %s s, pre-slip %s, peak %s px/frame, "
                "detector before fall %d/%d, first slip E/W %d/%d (%.1f s)\n",
                done, total, d.c_str(), r.n_pins, r.summary.with_incipient, r.summary.runs,
@@ -203,7 +204,7 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
   o.stop = stop;
   if (!a.quiet) {
     o.started = [&](size_t designs) {
-      std::fprintf(stderr, "sweeping %zu design(s) x %d run(s) of %s into %s/\n", designs, a.sweep_runs,
+      ProgressF("sweeping %zu design(s) x %d run(s) of %s into %s/\n", designs, a.sweep_runs,
                    scenario.name().c_str(), o.out_dir.c_str());
     };
   }
@@ -214,7 +215,7 @@ int RunSweepCommand(const StudyArgs& a, const std::atomic<bool>* stop) {
   });
   folder.Keep();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::fprintf(stderr, "done: %zu designs in %.1f s; wrote %s/designs.csv, runs.csv%s\n", results.size(), wall,
+  ProgressF("done: %zu designs in %.1f s; wrote %s/designs.csv, runs.csv%s\n", results.size(), wall,
                o.out_dir.c_str(), SweepDrawsHeatmaps(o) ? " and one heatmap per metric (*.png)" : "");
   return 0;
 }

@@ -10,6 +10,7 @@
 #include "scenarios/app/cli/output_checks.h"
 #include "sensors/frame_tracking.h"
 #include "sim/base/files.h"
+#include "sim/base/progress.h"
 
 namespace tactip::cli {
 
@@ -36,7 +37,7 @@ int RunTrack(const TrackArgs& a) {
   for (const PinFrame& f : frames) {
     for (unsigned char v : f.valid) misses += v ? 0 : 1;
   }
-  std::fprintf(stderr, "tracked %d pins through %zu frames (%lld misses); wrote %s\n", frames.front().size(),
+  ProgressF("tracked %d pins through %zu frames (%lld misses); wrote %s\n", frames.front().size(),
                frames.size(), misses, a.out.c_str());
   return 0;
 }

@@ -11,6 +11,7 @@
 #include "scenarios/app/viewer/replay_view_source.h"
 #include "scenarios/app/cli/common.h"
 #include "scenarios/app/cli/option_checks.h"
+#include "sim/base/progress.h"
 #include "sim/config.h"
 #include "sim/base/files.h"
 #include "sim/png_file.h"
@@ -81,7 +82,7 @@ int SaveScreenshot(RailViewSource& source, const ViewArgs& a) {
   options.contact_forces = a.forces;
   options.force_scale_m_N = source.force_scale_m_N();
   SavePng(renderer.Render(source.sim(), options), a.screenshot);
-  std::fprintf(stderr, "wrote %s (%d x %d px, t = %.3f s)\n", a.screenshot.c_str(), a.width, a.height, source.time());
+  ProgressF("wrote %s (%d x %d px, t = %.3f s)\n", a.screenshot.c_str(), a.width, a.height, source.time());
   return 0;
 }
 
@@ -114,7 +115,7 @@ int ViewReplay(const ViewArgs& a) {
                                  a.time_s, a.run, a.replay, source.stored_end_s(), source.stored_end_s()));
   }
   const int code = Show(source, a, "tactip view --replay " + a.replay);
-  std::fprintf(stderr, "replay of run %d of %s up to t = %.3f s: %s\n", a.run, a.replay.c_str(), source.time(),
+  ProgressF("replay of run %d of %s up to t = %.3f s: %s\n", a.run, a.replay.c_str(), source.time(),
                source.DifferenceReport().c_str());
   return code;
 }

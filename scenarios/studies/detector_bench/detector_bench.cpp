@@ -134,6 +134,7 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
 
   TrainOptions topt = opts.train;
   topt.seed = opts.seed;
+  topt.progress = [&opts](const std::string& line) { Log(opts, "  " + line); };
   const TrainingSet ts = BuildTrainingSet(train, topt);
   r.train_rows = static_cast<long>(ts.y.size());
   for (int y : ts.y) r.train_slip_rows += y;
