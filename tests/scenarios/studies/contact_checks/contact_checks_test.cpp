@@ -19,6 +19,11 @@ namespace {
 constexpr double kStateAgreement = 0.98;  // acceptance: pins in the brush model's state
 constexpr double kLoadTolerance = 0.03;   // acceptance: transmitted load within 3 %
 constexpr double kSlipOrder = 0.9;        // acceptance: rank correlation of slip order and load
+// The dome checks' ramps in these tests: a lattice soft in shear travels to gross slip in at most
+// this long (the command: 80 s), twice as fast; measured on v2, the largest release error goes
+// from 0.0032 to 0.0024 Q/muP (the preset, clamped) and from 0.0008 to 0.0008 (free rim), against
+// the check's 0.01.
+constexpr double kTestRampS = 40.0;
 
 TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
   const BrushCheck c = RunBrushCheck(BrushCheckOptions{});
@@ -78,6 +83,7 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
   o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
   ASSERT_EQ(o.rig.skin.pattern, "fingerprint-v2");
   o.rig.sim.timestep_s = 0.001;
+  o.max_ramp_s = kTestRampS;
   const DomeCheck c = RunDomeCheck(o);
   ASSERT_GE(c.pins_in_contact, 19);
   EXPECT_NEAR(c.gross_q_ratio, 1.0, 0.03);
@@ -145,6 +151,7 @@ TEST(DomeCheckTest, AClampedRimsOuterRingIsInTheExactSolution) {
     o.rig.skin.gel_shear_modulus_kpa = 6.67;
     o.rig.skin.rim = rim;
     o.rig.sim.timestep_s = 0.001;
+    o.max_ramp_s = kTestRampS;
     const DomeCheck c = RunDomeCheck(o);
     EXPECT_TRUE(DomeCriteria{}.ReleaseOk(c)) << "largest release error " << c.release_error_max << " Q/muP";
     exact_lo.emplace_back();
@@ -170,7 +177,7 @@ TEST(DomeCheckTest, ASkinSoftenedToAThirdOfTheChordPutsTheSoftGelsStickBoundaryI
   const double modulus_mpa = ContinuumSkinModulusMpa(o.rig.skin, o.depth_mm);
   EXPECT_LT(modulus_mpa, 0.4);
   o.rig.skin.skin_modulus_mpa = modulus_mpa;
-  o.max_ramp_s = 15.0;  // to save time (the command: 80 s)
+  o.max_ramp_s = 7.5;  // to save time (the command: 80 s; release error 0.0039 Q/muP measured, 0.0016 at 15 s)
   const PinLattice lattice = PinLattice::Build(o.rig.skin);
   const double r_out_mm = o.rig.skin.OuterRadiusMm();
   const double chord_mm = std::sqrt(o.depth_mm * (2.0 * r_out_mm - o.depth_mm));
@@ -277,11 +284,12 @@ TEST(DomeCheckTest, CentralMembraneLinksAreAccepted) {
 // out up to 0.031 early).
 // The v2 dome on `links` at 1 ms, judged as the configured lattice is (gross slip, outside-in,
 // every pin at its exact release; the band is the continuum-regime lattice's).
-void ExpectV2DomeAtItsExactReleases(const std::string& links) {
+void ExpectV2DomeAtItsExactReleases(const std::string& links, double depth_mm = DomeCheckOptions{}.depth_mm) {
   DomeCheckOptions o;
   o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
   o.rig.skin.membrane_links = links;
   o.rig.sim.timestep_s = 0.001;
+  o.depth_mm = depth_mm;
   const DomeCheck c = RunDomeCheck(o);
   ASSERT_GE(c.pins_in_contact, 19);
   DomeCriteria configured;
@@ -297,9 +305,11 @@ TEST(DomeCheckTest, CentralLinksSlipOutsideInAtTheirExactReleases) { ExpectV2Dom
 
 // v2 on the orthotropic membrane (the corrugated sheet's triangles): the same judgement
 // (measured max 0.0010 Q/muP at 0.5 ms; with the exact solution's friction held at its direction
-// of release, as before the solution saw the sheet couple y and z, 0.037).
+// of release, as before the solution saw the sheet couple y and z, 0.037). Pressed 2 mm: 19 pins
+// on three rings in contact, 0.0009 Q/muP measured; at 3 mm (37 pins, 0.0010) the sheet's
+// sliding steps make the check take five times as long.
 TEST(DomeCheckTest, OrthotropicMembraneSlipsOutsideInAtItsExactReleases) {
-  ExpectV2DomeAtItsExactReleases("orthotropic");
+  ExpectV2DomeAtItsExactReleases("orthotropic", 2.0);
 }
 
 // Its gel springs rest at each pin's height: dome springs are refused too.
