@@ -28,6 +28,7 @@
 #include "sim/simulation.h"
 #include "input_error.h"
 #include "models/preset_skin.h"
+#include "tests/long_experiment.h"
 
 namespace tactip {
 namespace {
@@ -686,6 +687,7 @@ double EulerStepGrowth(const LatticeDynamics& d, double mass, double h) {
 // whole lattice's Euler step (every pin collidable, so every pin carries a spring) then
 // decays, even with the gel 100 times stiffer, where the physical dampers let it grow.
 TEST_F(FingerprintSkinPartTest, DomeSpringsLatticeStepDecaysWithTheDampingFloors) {
+  TACTIP_LONG_EXPERIMENT();
   const DomeV2 preset;
   double widest = 0.0;
   for (const auto& pin : preset.lattice.pins) widest = std::max(widest, std::acos(pin.normal[0]));

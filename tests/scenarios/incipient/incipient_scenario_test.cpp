@@ -29,6 +29,7 @@
 #include "run_records.h"
 #include "shared_runs.h"
 #include "temp_dir.h"
+#include "tests/long_experiment.h"
 
 namespace tactip {
 namespace {
@@ -171,6 +172,7 @@ TEST_F(IncipientScenarioTest, SmoothSkinSlipsAllAtOnceWithoutIncipientPhase) {
 }
 
 TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyBeforeGrossSlip) {
+  TACTIP_LONG_EXPERIMENT();
   for (const RunRecord* r : RunSeeds("fingerprint-v2", kV2Seeds)) {
     const RunRecord& rec = *r;
     SCOPED_TRACE("run with friction " + std::to_string(Attr(rec, "friction_coefficient")));
@@ -216,6 +218,7 @@ TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyBeforeGrossSlip) {
 }
 
 TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyAtLeastHalfASecondBeforeTheFallAndNeverRaisesEarlyAlarms) {
+  TACTIP_LONG_EXPERIMENT();
   // The hardware finding: incipient slip >= 0.5 s before the object falls. The
   // bulk-subtraction detector (W = 5, s_thr = 0.2 px, I_thr = 4) never alarms before any
   // pin slips. At the validated 1 ms step it alarms at the fall, not before it (README,
@@ -236,6 +239,7 @@ TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyAtLeastHalfASecondBefor
 }
 
 TEST_F(IncipientScenarioTest, IncipientWindowIsQuasiStaticSoASlowerRetractionLengthensIt) {
+  TACTIP_LONG_EXPERIMENT();
   // Partial slip spreads as the normal load falls: the window is a stretch of retraction
   // distance, so at a third of the speed it lasts clearly longer (same seed, same skin).
   RailScenarioConfig slow = IncipientConfig("fingerprint-v2");
@@ -253,6 +257,7 @@ TEST_F(IncipientScenarioTest, IncipientWindowIsQuasiStaticSoASlowerRetractionLen
 }
 
 TEST_F(IncipientScenarioTest, SlipMemoryMakesTheOnsetsConvergeAsTheStepHalves) {
+  TACTIP_LONG_EXPERIMENT();
   // The same v2 run at 0.5 ms (the default) and 0.25 ms: with the scenario's slip memory the
   // velocity-weakening law has no instantaneous negative damping, so the onsets no longer
   // depend on the step (README, "Accuracy"; before the memory this run's two onsets lay

@@ -10,6 +10,7 @@
 #include "scenarios/rail/rail_run.h"
 #include "sensors/camera.h"
 #include "sensors/tactile_image.h"
+#include "tests/long_experiment.h"
 
 namespace tactip {
 namespace {
@@ -81,6 +82,7 @@ TEST(ImagesAcceptanceTest, BlobDetectionRecoversPinsWithin1PxOverARunOfTheDefaul
 }
 
 TEST(ImagesAcceptanceTest, BlobDetectionRecoversPinsWithin1PxOverARunOfAFingerprintSkin) {
+  TACTIP_LONG_EXPERIMENT();
   ExpectRecovered(RunAndScore(ShortImagedRun(SkinPresetOverrides("fingerprint-v2"))));
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tests/long_experiment.h"
 #include "tests/scenarios/cli_helpers.h"
 #include "scenarios/studies/contact_checks/contact_checks.h"
 #include "scenarios/rail/rail.h"
@@ -26,6 +27,7 @@ constexpr double kSlipOrder = 0.9;        // acceptance: rank correlation of sli
 constexpr double kTestRampS = 40.0;
 
 TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
+  TACTIP_LONG_EXPERIMENT();
   const BrushCheck c = RunBrushCheck(BrushCheckOptions{});
   ASSERT_GT(c.pins_in_contact, 19) << "the 2 mm press should load at least three rings";
   EXPECT_GE(c.state_agreement, kStateAgreement) << "over " << c.pin_samples << " pin-samples";
@@ -48,6 +50,7 @@ TEST(BrushModelTest, UncoupledLatticeMatchesTheBrushModel) {
 // travel to slip; the ramp is sped up to fit its (here shortened) time limit and still follows
 // the brush model.
 TEST(BrushModelTest, ASoftGelsLongerRampIsShearedFasterAndStillMatches) {
+  TACTIP_LONG_EXPERIMENT();
   BrushCheckOptions o;
   o.rig.skin.gel_shear_modulus_kpa = 6.67;
   o.max_ramp_s = 10.0;  // to save time (the command: 20 s)
@@ -127,6 +130,7 @@ TEST(DomeCheckTest, CoupledLatticeSlipsOutsideInAndGrossSlipsAtMuP) {
 // the cone) and the labels must say so, or the release comes out late (at the former 10 um/s
 // threshold, a tenth of the ramp's speed, the outer ring let go at 0.72 Q/muP instead of 0.24-0.31).
 TEST(DomeCheckTest, ASaturatedPinDraggedSlowlyByTheMembraneIsLabelledSlippingAtItsExactLoad) {
+  TACTIP_LONG_EXPERIMENT();
   DomeCheckOptions o;
   o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
   o.rig.skin.gel_shear_modulus_kpa = 6.67;
@@ -143,6 +147,7 @@ TEST(DomeCheckTest, ASaturatedPinDraggedSlowlyByTheMembraneIsLabelledSlippingAtI
 // of the annulus; the membrane passes that to the contact. The exact solution must carry the
 // same springs: every pin still releases at its exact load.
 TEST(DomeCheckTest, AClampedRimsOuterRingIsInTheExactSolution) {
+  TACTIP_LONG_EXPERIMENT();
   std::vector<std::vector<double>> exact_lo;
   for (const std::string rim : {"free", "clamped"}) {
     SCOPED_TRACE("skin.rim = " + rim);
@@ -169,6 +174,7 @@ TEST(DomeCheckTest, AClampedRimsOuterRingIsInTheExactSolution) {
 // materials fragment) the former fixed 0.3 mm skin coupled over 0.46 a and missed the band
 // (86.5 %, its exact solution too); the softened skin lands in it.
 TEST(DomeCheckTest, ASkinSoftenedToAThirdOfTheChordPutsTheSoftGelsStickBoundaryInTheBand) {
+  TACTIP_LONG_EXPERIMENT();
   DomeCheckOptions o;
   o.rig.skin = LoadConfig<RailScenarioConfig>("", SkinPresetOverrides("fingerprint-v2")).skin;
   o.rig.skin.gel_shear_modulus_kpa = 6.67;
@@ -197,6 +203,7 @@ TEST(DomeCheckTest, ASkinSoftenedToAThirdOfTheChordPutsTheSoftGelsStickBoundaryI
 // Membrane coupling grows with skin thickness; a strongly coupled lattice releases each
 // ring before Cattaneo-Mindlin does, a weakly coupled one stays between CM and the brush.
 TEST(DomeCheckTest, ThinnerSkinKeepsTheStickBoundaryCloserToTheContinuumBand) {
+  TACTIP_LONG_EXPERIMENT();
   // On the lumped materials (gel shear E_gel / 3, a 1 MPa skin, no rim), where a 0.3 mm skin couples over less
   // than a third of the contact; over the preset's soft gel it couples further (validate contact
   // softens the skin instead: ASkinSoftenedToAThirdOfTheChord...).
@@ -301,7 +308,10 @@ void ExpectV2DomeAtItsExactReleases(const std::string& links, double depth_mm = 
   EXPECT_TRUE(configured.Pass(c));
 }
 
-TEST(DomeCheckTest, CentralLinksSlipOutsideInAtTheirExactReleases) { ExpectV2DomeAtItsExactReleases("central"); }
+TEST(DomeCheckTest, CentralLinksSlipOutsideInAtTheirExactReleases) {
+  TACTIP_LONG_EXPERIMENT();
+  ExpectV2DomeAtItsExactReleases("central");
+}
 
 // v2 on the orthotropic membrane (the corrugated sheet's triangles): the same judgement
 // (measured max 0.0010 Q/muP at 0.5 ms; with the exact solution's friction held at its direction
@@ -309,6 +319,7 @@ TEST(DomeCheckTest, CentralLinksSlipOutsideInAtTheirExactReleases) { ExpectV2Dom
 // on three rings in contact, 0.0009 Q/muP measured; at 3 mm (37 pins, 0.0010) the sheet's
 // sliding steps make the check take five times as long.
 TEST(DomeCheckTest, OrthotropicMembraneSlipsOutsideInAtItsExactReleases) {
+  TACTIP_LONG_EXPERIMENT();
   ExpectV2DomeAtItsExactReleases("orthotropic", 2.0);
 }
 

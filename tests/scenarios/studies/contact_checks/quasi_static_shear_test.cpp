@@ -17,6 +17,7 @@
 #include "scenarios/studies/contact_checks/quasi_static_shear.h"
 #include "scenarios/rail/rail.h"
 #include "sim/base/errors.h"
+#include "tests/long_experiment.h"
 
 namespace tactip {
 namespace {
@@ -232,6 +233,7 @@ void ExpectMirrorPinsReleaseTogether(const PressedLattice& p, const QuasiStaticS
 }
 
 TEST(QuasiStaticShearTest, CentralLinksOnV2ReleaseMirrorPinsTogether) {
+  TACTIP_LONG_EXPERIMENT();
   const PressedLattice p = PressedV2("central");
   ASSERT_TRUE(p.mech.central_links);
   const QuasiStaticShear qs = SolveQuasiStaticShear(LatticeShearStiffness::Of(p.lattice, p.mech), p.normal_N,
@@ -270,6 +272,7 @@ std::array<double, 2> FirstReleaseSidesAndAxis(const std::string& links) {
 }
 
 TEST(QuasiStaticShearTest, OrthotropicMembraneOnV2LetsTheSidesGoFirst) {
+  TACTIP_LONG_EXPERIMENT();
   ASSERT_TRUE(PressedV2("orthotropic").mech.orthotropic_links);
   const auto orthotropic = FirstReleaseSidesAndAxis("orthotropic");
   EXPECT_GT(orthotropic[1], 1.1 * orthotropic[0]) << "sides " << orthotropic[0] << ", axis " << orthotropic[1];

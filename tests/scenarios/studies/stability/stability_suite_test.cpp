@@ -16,6 +16,7 @@
 #include <set>
 #include <string>
 
+#include "tests/long_experiment.h"
 #include "tests/scenarios/cli_helpers.h"
 #include "input_error.h"
 #include "models/stability.h"
@@ -288,6 +289,7 @@ TEST_F(StabilityCliTest, SetReachesEveryCaseBeneathItsOwnKeysAndIsCheckedFirst) 
 }
 
 TEST_F(StabilityCliTest, WholeSuiteIsHealthyOrRefusedClearly) {
+  TACTIP_LONG_EXPERIMENT();
   // Every case, retracting at 2 mm/s where a case does not set its own speed (the suite's short
   // protocol retracts at 1 mm/s): half the simulated retraction.
   const CliResult r = Run("stability --quiet --set rail.retract_speed_mm_s=2 --out " + (dir_ / "out").string());

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/long_experiment.h"
 #include "tests/scenarios/cli_helpers.h"
 #include "tests/scenarios/png_check.h"
 
@@ -52,6 +53,7 @@ constexpr const char* kValidatedStep =
     " --set sim.timestep_s=0.001 --set rail.lift_mm=10 --set rail.retract_speed_mm_s=1";
 
 TEST_F(SweepCliTest, GridGivesOneRowPerDesignPngHeatmapsAndReproducesExactly) {
+  TACTIP_LONG_EXPERIMENT();
   const std::string args = std::string("sweep incipient --param skin.thickness_mm=0.5,1 --param skin.ridge_spacing_mm=3,4") +
                            kValidatedStep + " --runs 1 --quiet --out ";
   const CliResult a = Run(args + (dir_ / "a").string());
