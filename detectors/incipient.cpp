@@ -14,7 +14,7 @@
 namespace tactip {
 namespace {
 
-constexpr const char* kHeader = "tactip-detector incipient 1";
+constexpr const char* kIncipientModelHeader = "tactip-detector incipient 1";
 
 }  // namespace
 
@@ -152,7 +152,7 @@ void IncipientDetector::Remember(const PinFrame& frame) {
 }
 
 void IncipientDetector::Save(const std::string& path) const {
-  std::string text = std::string(kHeader) + "\n";
+  std::string text = std::string(kIncipientModelHeader) + "\n";
   text += "window " + std::to_string(params_.window) + "\n";
   text += "speed_thr_px " + RoundTripText(params_.speed_thr_px) + "\n";
   text += "count_thr " + std::to_string(params_.count_thr) + "\n";
@@ -161,7 +161,7 @@ void IncipientDetector::Save(const std::string& path) const {
 
 std::unique_ptr<IncipientDetector> IncipientDetector::Load(const std::string& path) {
   IncipientParams p;
-  ReadKeyValueModel(ReadText(path), path, kHeader,
+  ReadKeyValueModel(ReadText(path), path, kIncipientModelHeader,
                     {{"window", [&](const std::string& v) { return ParseWhole(v, p.window); }},
                      {"speed_thr_px", [&](const std::string& v) { return ParseWhole(v, p.speed_thr_px); }},
                      {"count_thr", [&](const std::string& v) { return ParseWhole(v, p.count_thr); }}});

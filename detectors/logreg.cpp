@@ -18,16 +18,17 @@
 #include "sim/base/temp_file.h"
 
 namespace tactip {
-namespace {
 
-/// Bias feature appended to every row (liblinear's "-B 1").
-constexpr double kBias = 1.0;
-
-/// Frees a liblinear model.
+/// Frees a liblinear model. Outside the anonymous namespace: the detector's Impl holds one.
 struct LinearModelFree {
   void operator()(::model* m) const { ::free_and_destroy_model(&m); }
 };
 using LinearModelPtr = std::unique_ptr<::model, LinearModelFree>;
+
+namespace {
+
+/// Bias feature appended to every row (liblinear's "-B 1").
+constexpr double kBias = 1.0;
 
 /// Routes liblinear's progress printing into a no-op (the hook is liblinear's own global).
 void SilenceLiblinear() { ::set_print_string_function([](const char*) {}); }

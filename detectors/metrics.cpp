@@ -9,6 +9,8 @@
 #include <limits>
 #include <utility>
 
+#include "sim/base/nan.h"
+
 namespace tactip {
 namespace {
 
@@ -31,8 +33,6 @@ Confusion& Confusion::operator+=(const Confusion& o) {
 }
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Counts frame k's decision into the run's confusion (the labelled window only).
 void ScoreFrame(const LabeledRun& run, int k, int n_slip, bool slip, RunEvaluation& re) {

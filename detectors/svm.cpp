@@ -21,6 +21,14 @@
 #include "sim/base/temp_file.h"
 
 namespace tactip {
+
+/// Frees a libsvm model (whether from svm_train or svm_load_model). Outside the
+/// anonymous namespace: the detector's Impl holds one.
+struct SvmModelFree {
+  void operator()(svm_model* m) const { svm_free_and_destroy_model(&m); }
+};
+using SvmModelPtr = std::unique_ptr<svm_model, SvmModelFree>;
+
 namespace {
 
 /// libsvm reads and writes model files through process-wide state (a static line buffer,
@@ -29,12 +37,6 @@ std::mutex& LibsvmFileMutex() {
   static std::mutex m;
   return m;
 }
-
-/// Frees a libsvm model (whether from svm_train or svm_load_model).
-struct SvmModelFree {
-  void operator()(svm_model* m) const { svm_free_and_destroy_model(&m); }
-};
-using SvmModelPtr = std::unique_ptr<svm_model, SvmModelFree>;
 
 /// Routes libsvm's progress printing into a no-op (the hook is libsvm's own global).
 void SilenceLibsvm() { svm_set_print_string_function([](const char*) {}); }

@@ -16,7 +16,7 @@
 namespace tactip {
 namespace {
 
-constexpr const char* kHeader = "tactip-detector threshold 1";
+constexpr const char* kThresholdModelHeader = "tactip-detector threshold 1";
 
 /// F1 = 2 tp / (2 tp + fp + fn); 0 when undefined.
 double F1Score(long tp, long fp, long fn) {
@@ -43,12 +43,12 @@ Decision ThresholdDetector::Update(const PinFrame& frame) {
 }
 
 void ThresholdDetector::Save(const std::string& path) const {
-  WriteFileAtomic(path, std::string(kHeader) + "\nthreshold_px " + RoundTripText(threshold_px_) + "\n");
+  WriteFileAtomic(path, std::string(kThresholdModelHeader) + "\nthreshold_px " + RoundTripText(threshold_px_) + "\n");
 }
 
 std::unique_ptr<ThresholdDetector> ThresholdDetector::Load(const std::string& path) {
   double t = 0.0;
-  ReadKeyValueModel(ReadText(path), path, kHeader,
+  ReadKeyValueModel(ReadText(path), path, kThresholdModelHeader,
                     {{"threshold_px", [&](const std::string& v) { return ParseWhole(v, t); }}});
   const std::string where = "model '" + path + "': ";
   try {

@@ -8,7 +8,6 @@
 namespace tactip {
 
 namespace {
-constexpr double kRubberPoisson = 0.5;  // rubber is nearly incompressible
 
 // Developed over projected length of one period of the ridge profile.
 double RidgeLengthRatio(const SkinConfig& skin) {

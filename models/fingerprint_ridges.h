@@ -22,8 +22,8 @@ struct RidgeCell {
   static RidgeCell Of(const SkinConfig& skin, double plate_rigidity_N_m);
 };
 
-/// The concentric ridges make a fingerprint skin a corrugated sheet (README 'Orthotropic
-/// membrane'; flat for the smooth skin).
+/// The concentric ridges make a fingerprint skin a corrugated sheet (docs/fingerprint-skins.md
+/// 'Orthotropic membrane'; flat for the smooth skin).
 struct Corrugation {
   /// Radial compliance over the flat sheet's: stretched across its waves the sheet bends as
   /// well as stretches, 1 + 6 (1 - nu^2) (a / t)^2, a the waves' amplitude (half the ridge height).

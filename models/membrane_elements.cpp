@@ -10,7 +10,6 @@
 namespace tactip {
 
 namespace {
-constexpr double kRubberPoisson = 0.5;
 
 using Vec2 = std::array<double, 2>;
 

@@ -10,7 +10,7 @@ struct SkinConfig;
 struct PinLattice;
 
 /// In-plane membrane of the skin rubber as the pin lattice models it: a triangular spring
-/// network, whose 2-D Poisson ratio is 1/3 (README 'The skin's rim').
+/// network, whose 2-D Poisson ratio is 1/3 (docs/fingerprint-skins.md 'The skin's rim').
 inline constexpr double kMembranePoisson = 1.0 / 3.0;
 
 /// Force per unit translation (N/m) of a rigid disc of radius inner_m bonded inside a flat

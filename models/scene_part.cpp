@@ -6,10 +6,6 @@
 
 namespace tactip {
 
-namespace {
-std::vector<double> V3(double x, double y, double z) { return {x, y, z}; }
-}  // namespace
-
 ContactBudget SceneContactBudget(const SimConfig& sim, int n_collidable) {
   ContactBudget b;
   b.nconmax = n_collidable + 8;
@@ -35,7 +31,7 @@ mjcf::Element SceneRoot(const std::string& model_name, const SimConfig& sim, con
       .Set("tolerance", sim.tolerance)
       .SetInt("noslip_iterations", exact_noslip ? 0 : sim.noslip_iterations)
       .Set("noslip_tolerance", sim.noslip_tolerance)
-      .Set("gravity", V3(0, 0, gravity_z));
+      .Set("gravity", std::vector<double>{0, 0, gravity_z});
   const ContactBudget budget = SceneContactBudget(sim, n_collidable);
   root.Add("size").SetInt("nconmax", budget.nconmax).SetInt("njmax", budget.njmax).SetInt("nuser_jnt", 1);
   const bool post_pass = sim.noslip_iterations > 0;

@@ -45,7 +45,7 @@ void SkinConfig::ValidateRules() const {
     FailRule("skin.contact_radius_mm", contact_radius_mm, "must be < radius_mm");
   }
   if (DomeSprings() && pattern == "fingerprint-v1") {
-    // Measured (README 'Dome springs'): 10 of 10 v1 incipient runs flagged by run health.
+    // Measured (docs/fingerprint-skins.md 'Dome springs'): 10 of 10 v1 incipient runs flagged by run health.
     FailRule("skin.normal_spring", normal_spring,
              "fingerprint-v1's edge pins flicker in and out of contact while held on dome springs (their runs "
              "are flagged by run health); use axial");

@@ -10,6 +10,9 @@
 namespace tactip {
 
 /// The range of skin.skin_modulus_mpa: from a soft silicone gel's few kPa to a stiff rubber's.
+/// Poisson's ratio of the skin's and the gel's rubber: nearly incompressible.
+inline constexpr double kRubberPoisson = 0.5;
+
 inline constexpr double kSkinModulusMinMpa = 0.001;
 inline constexpr double kSkinModulusMaxMpa = 100.0;
 
@@ -115,13 +118,14 @@ struct SkinConfig {
       "skin's tension and the confined gel too); a silicone gel's own shear modulus is several times lower than "
       "gel_modulus_kpa / 3. 10 (the default, the smooth skin's shell): calibrated to the real TacTip's gross-slip "
       "spike (~20 frames of above-noise pin motion from the onset), which the shell meets at 11 kPa and below "
-      "and misses at 13 (README 'The smooth skin's shear'); the fingerprint presets, whose membrane lattice resolves the skin, set 6.67 "
-      "(README 'The skin's materials'). 0: gel_modulus_kpa / 3, the column's own modulus taken as an "
-      "incompressible solid (the smooth shell before the calibration, 1650 N/m).",
+      "and misses at 13 (docs/model.md 'The smooth skin's shear'); the fingerprint presets, whose membrane "
+      "lattice resolves the skin, set 6.67 (docs/fingerprint-skins.md 'The skin's materials'). 0: "
+      "gel_modulus_kpa / 3, the column's own modulus taken as an incompressible solid (the smooth shell before "
+      "the calibration, 1650 N/m).",
       Bounds::Closed(0.0, 10000.0));
     v("skin_modulus_mpa", skin_modulus_mpa, "MPa",
       "Young's modulus of the skin rubber (Shore A 26-28 -> ~1 MPa by Gent's relation; the fingerprint presets "
-      "set a fitted 0.4 MPa, README 'The skin's materials').",
+      "set a fitted 0.4 MPa, docs/fingerprint-skins.md 'The skin's materials').",
       Bounds::Closed(kSkinModulusMinMpa, kSkinModulusMaxMpa));
   }
   /// The damping of the pins' normal and shear modes and of the shell.
@@ -142,13 +146,13 @@ struct SkinConfig {
       "forms has a damping ratio of half of it: the damper along the rail follows the mass the shell carries - "
       "its own, plus the held object's share while its contacts stick (rail and incipient scenarios); released "
       "shear rings on after gross slip. A shell damped below a ratio of 0.5 is validated with a sliding step "
-      "(sim.sliding_timestep_s, from the gross-slip onset on) up to 0.001 s (README 'The pin-lattice skin').",
+      "(sim.sliding_timestep_s, from the gross-slip onset on) up to 0.001 s (docs/model.md 'The pin-lattice "
+      "skin').",
       Choices{"viscous", "gel"});
     v("gel_loss_tangent", gel_loss_tangent, "",
       "Loss tangent tan(delta) = G''/G' of the gel's shear modulus (shell_damping = gel): the shell's in-plane "
       "modes are damped at a ratio tan(delta) / 2. Soft silicone gels have 0.05-0.3 at 1-100 Hz; 0.16 (ratio "
-      "0.08) lies mid-range (README 'Slip signatures against the hardware' gives the gross-slip spike it "
-      "makes).",
+      "0.08) lies mid-range (docs/model.md 'The pin-lattice skin').",
       Bounds::Closed(0.01, 2.0));
   }
   /// The contact patch, and how the pins are coupled through the skin and held at its rim.
@@ -170,7 +174,8 @@ struct SkinConfig {
       "base (arc pi R / 2), where the skin is clamped to the sensor, is a flat annular membrane (E t, Poisson "
       "1/3 as the lattice's network) that pulls a translated pattern back with K = 2 pi mu t (1 + kappa) / "
       "(kappa ln(b/a) - (b^2 - a^2) / (kappa (a^2 + b^2))), kappa = (3 - nu) / (1 + nu): added to the shell's "
-      "shear springs (shell) or shared by the outermost ring's pins (membrane). See README 'The skin's rim'.",
+      "shear springs (shell) or shared by the outermost ring's pins (membrane). See docs/fingerprint-skins.md "
+      "'The skin's rim'.",
       Choices{"free", "clamped"});
     v("membrane_links", membrane_links, "",
       "How a membrane lattice's link (coupling membrane; the shell and none ignore this) pulls on its two pins' "
@@ -178,14 +183,14 @@ struct SkinConfig {
       "central: along the link only, as the triangular spring network that k_link = (sqrt 3 / 2) E t is derived "
       "from; a ridge rocks only across itself, so the ridges enter by the link's radial share c: k = 1 / (1 / "
       "k_link + 2 c^2 / k_rock), which is k_couple for a radial link, k_link along a ring. At a step of 0.25 ms "
-      "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.5 mm/s (README 'Membrane "
-      "links'); opt-in. 'validate contact' judges it against its exact quasi-static solution on central links "
-      "(README 'Contact validation'). orthotropic: the skin between the pins as linear triangles of a corrugated "
-      "sheet - the concentric ridges make it radially soft (stretched across its waves it bends, compliance "
-      "1 + 6 (1 - nu^2) (a / t)^2, a half the ridge height) and hoop stiff (the developed length), shear "
-      "carried along the developed path - scaled by k_couple / k_link for the ridges' rocking; fingerprint "
-      "patterns only; opt-in; 'validate contact' judges it against its exact solution too (README 'Orthotropic "
-      "membrane').",
+      "or finer it puts v2's first slip on the east/west sides in most runs at 0.1-0.5 mm/s "
+      "(docs/fingerprint-skins.md 'Membrane links'); opt-in. 'validate contact' judges it against its exact "
+      "quasi-static solution on central links (docs/validation.md 'Contact validation'). orthotropic: the skin "
+      "between the pins as linear triangles of a corrugated sheet - the concentric ridges make it radially soft "
+      "(stretched across its waves it bends, compliance 1 + 6 (1 - nu^2) (a / t)^2, a half the ridge height) "
+      "and hoop stiff (the developed length), shear carried along the developed path - scaled by k_couple / "
+      "k_link for the ridges' rocking; fingerprint patterns only; opt-in; 'validate contact' judges it against "
+      "its exact solution too (docs/fingerprint-skins.md 'Orthotropic membrane').",
       Choices{"isotropic", "central", "orthotropic"});
     v("normal_spring", normal_spring, "",
       "Where each lattice pin's normal (gel column) spring rests once the pin shears (coupling membrane or none; "
@@ -196,9 +201,10 @@ struct SkinConfig {
       "one sheared away from the apex recedes from the stimulus by tan(theta) of its shear: the object's weight "
       "unloads the contact's lower (south) side and loads its upper side. The gel field then reads the spring's "
       "compression. Along the dome normal the spring is k_n / cos^2(theta): the pin normal mode's bound takes "
-      "the lattice's widest pin, and the shear joints take that mode's damping floor too (README 'Dome "
-      "springs'). Opt-in; refused on fingerprint-v1 (its edge pins flicker in and out of contact while held) "
-      "and by 'validate contact' and 'accuracy domes' (their exact solution has axial springs).",
+      "the lattice's widest pin, and the shear joints take that mode's damping floor too "
+      "(docs/fingerprint-skins.md 'Dome springs'). Opt-in; refused on fingerprint-v1 (its edge pins flicker in "
+      "and out of contact while held) and by 'validate contact' and 'accuracy domes' (their exact solution has "
+      "axial springs).",
       Choices{"axial", "dome"});
   }
   /// The outer pattern: smooth, or a fingerprint's ridges and the pin rings under them.
@@ -230,8 +236,8 @@ struct SkinConfig {
       "half-space of the same Young's modulus, k_theta = pi E* b w^2 / 16, E* = E_gel / (1 - 0.5^2) (plane "
       "strain). A base a tenth as wide as the gel is deep loads only the gel near it, which columns of the full "
       "depth make pi h_gel / w times too soft (31 on v1, 42 on v2): with the skin hinges, v1's ridges rock 12 "
-      "times stiffer (k_rock 9.3 -> 115 N/m), v2's twice (191 -> 371 N/m). Opt-in; README 'Ridge rocking' gives "
-      "the figures it moves.",
+      "times stiffer (k_rock 9.3 -> 115 N/m), v2's twice (191 -> 371 N/m). Opt-in; docs/fingerprint-skins.md "
+      "'Ridge rocking' gives the figures it moves.",
       Choices{"winkler", "half-space"});
     v("pins_per_ring", pins_per_ring, "", "Fingerprint: ring k (k >= 1) carries pins_per_ring * k pins.",
       Bounds::Closed(1, 24));
@@ -246,17 +252,17 @@ struct SkinConfig {
       "What moves the markers the cameras see. gel: each pin's body (MuJoCo) plus the gel's lateral flow - an "
       "indented pin squeezes the incompressible gel sideways and the flow carries every marker outwards, so a "
       "press moves all markers, the outer ring too, as on a real TacTip. pins: the pin bodies alone (the contact "
-      "dynamics are the same; only the markers differ). See README 'Marker kinematics: the gel field'.",
+      "dynamics are the same; only the markers differ). See docs/model.md 'Marker kinematics: the gel field'.",
       Choices{"gel", "pins"});
     v("gel_flow_depth_mm", gel_flow_depth_mm, "mm",
       "Gel field: depth of the gel layer under the skin that flows sideways with it (a squeezed volume V moves "
       "the skin by V / (2 pi h s) at distance s). 2.5 mm, with gel_squeeze_mm 0.5, puts a flat press's marker "
-      "field within a factor 1.5 of a real 127-pin TacTip's at 2-4 mm (README).",
+      "field within a factor 1.5 of a real 127-pin TacTip's at 2-4 mm (docs/validation.md 'Marker check').",
       Bounds::Closed(0.1, 50.0));
     v("gel_squeeze_mm", gel_squeeze_mm, "mm",
       "Gel field: a pin indented by w squeezes a gel volume h tanh(w / h) per unit cell area sideways, h this "
       "value; deeper indentation pushes the gel column towards the core instead. 0.5 mm gives the real TacTip's "
-      "steep rise by 1 mm and slow growth after (README).",
+      "steep rise by 1 mm and slow growth after (docs/validation.md 'Marker check').",
       Bounds::Closed(0.01, 5.0));
   }
 };

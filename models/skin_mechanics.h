@@ -25,7 +25,7 @@ struct SkinMechanics {
   double shell_moving_mass_kg = 0.0;  ///< what the shell's in-plane joints carry: membrane plus every pin
   double pin_damping_Ns_m = 0.0;    ///< normal-mode damping per pin
   double shell_damping_Ns_m = 0.0;  ///< damping of the skin's in-plane translation
-  double membrane_N_m = 0.0;        ///< in-plane membrane stiffness E t (reported, see README)
+  double membrane_N_m = 0.0;        ///< in-plane membrane stiffness E t (reported; docs/model.md 'The pin-lattice skin')
   Corrugation corrugation;          ///< the ridges' corrugation of the membrane (orthotropic links)
   double dome_radius_m = 0.0;       ///< the core's radius (the lattice's arc-length layout)
   // Per-pin shear DOFs (coupling membrane or none):

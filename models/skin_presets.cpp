@@ -9,7 +9,7 @@ namespace tactip {
 namespace {
 // The membrane lattice resolves the skin (its stretch, its ridges, its rim), so its gel is the
 // gel's own: a very soft silicone, 6.67 kPa in shear, under a 0.4 MPa skin clamped at the dome's
-// base (README 'The skin's materials'). The smooth skin's rigid shell keeps the lumped defaults.
+// base (docs/fingerprint-skins.md 'The skin's materials'). The smooth skin's rigid shell keeps the lumped defaults.
 const std::vector<std::string> kResolvedMaterials = {"skin.gel_shear_modulus_kpa=6.67", "skin.skin_modulus_mpa=0.4",
                                                      "skin.rim=clamped"};
 

@@ -57,7 +57,7 @@ StableTimestep LargestStableTimestep(const RailSceneSpec& spec);
 /// elastic energy while held, pins flickering and jumping) that no linear mode predicts; at
 /// 1 ms they stay within run health at mu = 1. A slip event releases a shear load of order
 /// mu N, so above mu = 1 the step shrinks as 1 / mu (contact.friction; at mu = 3, 1 ms
-/// makes a pin bounce, 0.5 ms is healthy) (README, "Stability suite").
+/// makes a pin bounce, 0.5 ms is healthy) (docs/numerics.md, "Numerical stability").
 double ShearDofValidatedTimestep(const SkinConfig& skin, const ContactConfig& contact);
 
 /// Largest validated sliding step (the step a rail run takes from the gross-slip onset on,

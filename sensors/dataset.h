@@ -1,6 +1,6 @@
 #pragma once
 // HDF5 datasets of simulated runs: writing (atomically) and reading. The schema is
-// documented in the README and readable with h5py without project code.
+// documented in docs/dataset-format.md and readable with h5py without project code.
 
 #include <cstdint>
 #include <map>

@@ -2,7 +2,7 @@
 // The markers' lateral motion through the gel: an indented pin squeezes the incompressible
 // gel under the skin sideways, and the gel carries the skin and every pin's inner end
 // (the marker the camera sees) outwards with it. A linear influence of every pin's squeeze
-// on every marker, computed once per skin geometry (README "Marker kinematics: the gel
+// on every marker, computed once per skin geometry (docs/model.md "Marker kinematics: the gel
 // field"). The contact dynamics stay in MuJoCo; this moves only what the camera sees.
 
 #include <array>

@@ -7,7 +7,7 @@
 namespace tactip {
 
 namespace {
-constexpr double kRegularization = 1e-9;  // rigid rows: relative to A's largest diagonal
+constexpr double kRigidRowRegularization = 1e-9;  // rigid rows: relative to A's largest diagonal
 constexpr double kMinCapacity = 1e-9;     // N: capacity floor in those weights
 }  // namespace
 
@@ -184,7 +184,7 @@ double Delassus::RigidWeight(int ns, const int* free, const double* capacity, in
     max_diag = std::max(max_diag, At(free[a], free[a]));
     max_cap = std::max(max_cap, capacity[free[a]]);
   }
-  const double eps = kRegularization * std::max(max_diag, 1e-300);
+  const double eps = kRigidRowRegularization * std::max(max_diag, 1e-300);
   const double cap = std::max(capacity[k], kMinCapacity) / max_cap;
   return eps / (cap * cap);
 }
@@ -288,7 +288,7 @@ void Delassus::SolveDense(int ns, const int* free, const double* reg, const doub
     max_diag = std::max(max_diag, At(free[a], free[a]));
     max_cap = std::max(max_cap, capacity[free[a]]);
   }
-  const double eps = kRegularization * std::max(max_diag, 1e-300);
+  const double eps = kRigidRowRegularization * std::max(max_diag, 1e-300);
   for (int a = 0; a < ns; ++a) {
     const int k = free[a];
     for (int b = 0; b <= a; ++b) {

@@ -8,7 +8,7 @@
 namespace tactip {
 
 namespace {
-constexpr double kRegularization = 1e-9;  // a clamped group's own solve: relative diagonal weight
+constexpr double kGroupRegularization = 1e-9;  // a clamped group's own solve: relative diagonal weight
 constexpr double kConeTolerance = 1e-9;   // relative excess over the cone before a contact is clamped
 
 std::uint64_t PairKey(const mjContact& con) {
@@ -170,7 +170,7 @@ int FrictionPass::UpdateClampedGroups() {
         r += M[a * g + c] * f_[k + c];
       }
       x[a] = r;
-      M[a * g + a] += reg_[k + a] + kRegularization * std::max(M[a * g + a], 1e-300);
+      M[a * g + a] += reg_[k + a] + kGroupRegularization * std::max(M[a * g + a], 1e-300);
     }
     mju_cholFactor(M, g, 1e-300);
     mju_cholSolve(x, M, x, g);

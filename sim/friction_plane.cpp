@@ -12,7 +12,6 @@ namespace tactip {
 namespace {
 constexpr double kCancelled = 1e-12;   // relative size below which a combined Jacobian entry is a cancellation
 
-double Dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 }  // namespace
 
 FrictionPlane::FrictionPlane(const mjModel* m)
@@ -86,8 +85,8 @@ void FrictionPlane::Apply(const mjModel* m, mjData* d) const {
     if (dim >= 3 && jnt >= 0 && same_pattern &&
         FrictionDirections(n, con.frame + 3, con.frame + 6, d->xaxis + 3 * jnt, u1, u2)) {
       // Each new row is its direction's components along (t1, t2, n) times the old rows.
-      const double w1[3] = {Dot(u1, con.frame + 3), Dot(u1, con.frame + 6), Dot(u1, n)};
-      const double w2[3] = {Dot(u2, con.frame + 3), Dot(u2, con.frame + 6), Dot(u2, n)};
+      const double w1[3] = {mju_dot3(u1, con.frame + 3), mju_dot3(u1, con.frame + 6), mju_dot3(u1, n)};
+      const double w2[3] = {mju_dot3(u2, con.frame + 3), mju_dot3(u2, con.frame + 6), mju_dot3(u2, n)};
       CombineRows(m, d, i + 1, i + 2, i, w1, w2);
       for (int k = 0; k < 3; ++k) {
         con.frame[3 + k] = u1[k];

@@ -15,7 +15,6 @@ void Cross(const double* a, const double* b, double* out) {
   out[1] = a[2] * b[0] - a[0] * b[2];
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
-double Dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 }  // namespace
 
 std::vector<int> CompressionJoints(const mjModel* m) {
@@ -36,12 +35,12 @@ bool FrictionDirections(const double n[3], const double t1[3], const double t2[3
   };
   if (!a) return keep();
   Cross(n, a, u1);
-  const double sine = std::sqrt(Dot(u1, u1));
-  if (sine < kAlignedSine || std::abs(Dot(n, a)) < kMaxTiltCos) return keep();
+  const double sine = std::sqrt(mju_dot3(u1, u1));
+  if (sine < kAlignedSine || std::abs(mju_dot3(n, a)) < kMaxTiltCos) return keep();
   for (int k = 0; k < 3; ++k) u1[k] /= sine;
   double w[3];
   Cross(n, u1, w);
-  const double p = Dot(w, a), q = std::sqrt(1.0 - p * p);
+  const double p = mju_dot3(w, a), q = std::sqrt(1.0 - p * p);
   for (int k = 0; k < 3; ++k) u2[k] = (w[k] - p * a[k]) / q;
   return true;
 }

@@ -53,7 +53,8 @@ void PlotHeatmap(const HeatmapPlot& p);
 
 /// Error against run time: one panel per error column, every setting a labelled point, the
 /// Pareto front of the healthy settings as a step line, default and reference marked (see
-/// README "Plots"). The CSV's other columns: is_default, is_reference, healthy (0/1).
+/// docs/viewer-and-plots.md "Error against run time (pareto)"). The CSV's other columns: is_default,
+/// is_reference, healthy (0/1).
 struct ParetoPlot {
   std::string csv;                            ///< one row per numerical setting
   std::string x_column = "wall_s_per_sim_s";  ///< run time (wall s per simulated s), log axis
@@ -67,7 +68,7 @@ struct ParetoPlot {
 void PlotPareto(const ParetoPlot& p);
 
 /// One figure of a single run (`tactip plot`), drawn by the script's subcommand `kind`
-/// from `csv` and the run's events (see README "Figures of one run").
+/// from `csv` and the run's events (see docs/viewer-and-plots.md "Figures of one run").
 struct RunFigurePlot {
   std::string kind;        ///< run-motion, run-quiver, run-markers or run-indentation
   std::string csv;         ///< the figure's table (see run_figures/run_tables.h)

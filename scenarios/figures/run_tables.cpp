@@ -8,13 +8,13 @@
 
 #include <fmt/format.h>
 
+#include "sim/base/nan.h"
 #include "sim/config.h"
 
 namespace tactip {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMmPerM = 1e3;
 /// A rest radius below this is the image centre itself: no radial direction (px).
 constexpr double kCentreRadiusPx = 1e-9;

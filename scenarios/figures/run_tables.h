@@ -1,7 +1,7 @@
 #pragma once
 // The tables behind `tactip plot`'s figures of one run: pin motion over time, pin-velocity
 // quiver frames around the onset, internal vs external markers and the indentation field.
-// Each is a CSV text (columns in the README's "Figures of one run") computed from one
+// Each is a CSV text (columns in docs/viewer-and-plots.md "Figures of one run") computed from one
 // sensor's recording; scripts/plots/tactip_plot.py draws them.
 
 #include <string>

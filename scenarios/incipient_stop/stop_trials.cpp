@@ -6,15 +6,14 @@
 
 #include <fmt/format.h>
 
+#include "sim/base/nan.h"
+#include "sim/base/number_text.h"
 #include "sim/config.h"
 
 namespace tactip {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string Num(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.4f}", v); }
 
 // The hardware's online incipient stop (mission.md): fingerprint v2 stopped before the fall
 // in 17 of 20 trials; the smooth TacTip shows no incipient slip.
@@ -81,8 +80,8 @@ std::vector<StopTrial> RunStopTrials(const RailScenarioConfig& cfg, const StopTr
 std::string StopTrialsCsv(const std::vector<StopTrial>& trials) {
   std::string out = "trial,skin,outcome,stop_s,onset_s,fall_s,incipient_onset_s,lead_s,stopped_before_gross\n";
   for (const StopTrial& t : trials) {
-    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", t.trial, t.skin, ToString(t.outcome), Num(t.stop_s),
-                       Num(t.onset_s), Num(t.fall_s), Num(t.incipient_s), Num(t.lead_s), t.before_gross ? 1 : 0);
+    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", t.trial, t.skin, ToString(t.outcome), NumberCell(t.stop_s, "{:.4f}", "nan"),
+                       NumberCell(t.onset_s, "{:.4f}", "nan"), NumberCell(t.fall_s, "{:.4f}", "nan"), NumberCell(t.incipient_s, "{:.4f}", "nan"), NumberCell(t.lead_s, "{:.4f}", "nan"), t.before_gross ? 1 : 0);
   }
   return out;
 }

@@ -23,7 +23,7 @@ TimestepChoice RailProtocolScenario::ChooseStep(RailScenarioConfig& cfg) const {
 
 RailScenarioConfig IncipientDefaults() {
   // The acrylic contact: per-pin friction variation and velocity weakening with a slip
-  // memory (README, "Contacts and friction"), which let partial slip spread before the
+  // memory (docs/model.md, "Contacts and friction"), which let partial slip spread before the
   // grip fails.
   std::vector<std::string> keys = {"rail.stimulus=acrylic",           "external.enabled=true",
                                    "rail.retract_speed_mm_s=0.3",     "contact.pin_friction_spread=0.2",

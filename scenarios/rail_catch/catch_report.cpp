@@ -1,4 +1,5 @@
 #include "scenarios/rail_catch/catch_report.h"
+#include "sim/base/number_text.h"
 
 #include <cmath>
 #include <map>
@@ -28,16 +29,14 @@ std::string HardwareFigures(const std::string& stimulus, double speed_mm_s) {
   return it == curved.end() ? "" : it->second;
 }
 
-std::string Num(double v, const char* spec) { return std::isnan(v) ? "nan" : fmt::format(fmt::runtime(spec), v); }
-
 }  // namespace
 
 std::string CatchTrialsCsv(const std::vector<CatchTrial>& trials) {
   std::string out = "trial,stimulus,speed_mm_s,outcome,slip_distance_mm,onset_s,declared_s,delay_ms,classify_us\n";
   for (const CatchTrial& t : trials) {
-    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", t.trial, t.stimulus, Num(t.speed_mm_s, "{:g}"),
-                       ToString(t.outcome), Num(t.slip_distance_mm, "{:.3f}"), Num(t.onset_s, "{:.4f}"),
-                       Num(t.declared_s, "{:.4f}"), Num(t.delay_ms, "{:.1f}"), Num(t.classify_us, "{:.1f}"));
+    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", t.trial, t.stimulus, NumberCell(t.speed_mm_s, "{:g}", "nan"),
+                       ToString(t.outcome), NumberCell(t.slip_distance_mm, "{:.3f}", "nan"), NumberCell(t.onset_s, "{:.4f}", "nan"),
+                       NumberCell(t.declared_s, "{:.4f}", "nan"), NumberCell(t.delay_ms, "{:.1f}", "nan"), NumberCell(t.classify_us, "{:.1f}", "nan"));
   }
   return out;
 }
@@ -80,7 +79,7 @@ std::string FormatCatchTable(const std::vector<CatchSummaryRow>& rows) {
   for (const CatchSummaryRow& r : rows) {
     out += fmt::format("{:<10} {:>4g} mm/s {:>7} {:>7.0f}% {:>8.0f}% {:>7.0f}% {:>9} mm   {}\n", r.stimulus,
                        r.speed_mm_s, r.trials, r.caught_pct, r.false_positive_pct, r.dropped_pct,
-                       Num(r.mean_distance_mm, "{:.1f}"), r.hardware.empty() ? "-" : r.hardware);
+                       NumberCell(r.mean_distance_mm, "{:.1f}", "nan"), r.hardware.empty() ? "-" : r.hardware);
   }
   return out;
 }
@@ -89,7 +88,7 @@ std::string CatchSummaryCsv(const std::vector<CatchSummaryRow>& rows) {
   std::string out = "stimulus,speed_mm_s,trials,caught_pct,false_positive_pct,dropped_pct,mean_distance_mm,hardware\n";
   for (const CatchSummaryRow& r : rows) {
     out += fmt::format("{},{:g},{},{:.1f},{:.1f},{:.1f},{},\"{}\"\n", r.stimulus, r.speed_mm_s, r.trials, r.caught_pct,
-                       r.false_positive_pct, r.dropped_pct, Num(r.mean_distance_mm, "{:.3f}"), r.hardware);
+                       r.false_positive_pct, r.dropped_pct, NumberCell(r.mean_distance_mm, "{:.3f}", "nan"), r.hardware);
   }
   return out;
 }

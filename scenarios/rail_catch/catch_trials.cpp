@@ -6,13 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "sim/base/nan.h"
 #include "sim/config.h"
 
 namespace tactip {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The object counts as held again when, over the trial's last kSettleS, it slid less than
 // kSettleMm relative to the sensor (whose height is fixed during the retraction) and it is
 // clear of the rail's end stop.
@@ -29,7 +29,7 @@ double ActionTime(const RailRunSummary& s, const std::string& what) {
 }
 
 // Frame index of the first frame at or after `t`.
-size_t FrameAt(const RunRecord& rec, double t) {
+size_t FirstFrameFrom(const RunRecord& rec, double t) {
   return static_cast<size_t>(std::lower_bound(rec.time.begin(), rec.time.end(), t) - rec.time.begin());
 }
 
@@ -55,7 +55,7 @@ CatchTrial ScoreCatchTrial(const RailRunSummary& s, const RunRecord& rec, double
   // sensor's stays at the lift height through the retraction).
   const std::vector<double>& h = rec.object_height_m;
   if (!std::isnan(t.onset_s) && !h.empty()) {
-    const size_t k = std::min(FrameAt(rec, t.onset_s), h.size() - 1);
+    const size_t k = std::min(FirstFrameFrom(rec, t.onset_s), h.size() - 1);
     t.slip_distance_mm = std::max(0.0, (h[k] - h.back()) * 1e3);
   }
   // Acted before any slip: a false positive, whatever happened after.
@@ -64,7 +64,7 @@ CatchTrial ScoreCatchTrial(const RailRunSummary& s, const RunRecord& rec, double
     return t;
   }
   // Declared after the onset: caught if the object has come to rest clear of the stop.
-  const size_t settle = FrameAt(rec, rec.time.back() - kSettleS);
+  const size_t settle = FirstFrameFrom(rec, rec.time.back() - kSettleS);
   const bool at_rest = !h.empty() && std::abs(h[std::min(settle, h.size() - 1)] - h.back()) * 1e3 < kSettleMm;
   const bool clear = !h.empty() && h.back() * 1e3 > kStopClearMm;
   t.outcome = !std::isnan(t.declared_s) && at_rest && clear ? CatchOutcome::kCaught : CatchOutcome::kDropped;

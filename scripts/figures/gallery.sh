@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates the README's "Figures" gallery (assets/figures/): one rail run on the smooth
-# skin (flat plate, 0.1 mm/s) and one incipient run on fingerprint-v2 (acrylic plate,
-# external markers, 0.3 mm/s), each drawn by `tactip plot` into assets/figures/run-NAME-FIGURE.png.
+# Regenerates the figures of docs/viewer-and-plots.md 'The figure gallery' (assets/figures/; README.md
+# shows one of them, run-rail-smooth-motion.png): one rail run on the smooth skin (flat plate,
+# 0.1 mm/s) and one incipient run on fingerprint-v2 (acrylic plate, external markers, 0.3 mm/s),
+# each drawn by `tactip plot` into assets/figures/run-NAME-FIGURE.png.
 # Usage, from the repository:
 #   scripts/figures/gallery.sh [path/to/tactip]        (default: build/release/tactip)
 # The datasets and CSVs go to a temporary folder that is removed afterwards; only the PNGs

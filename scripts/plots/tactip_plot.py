@@ -6,7 +6,7 @@ Subcommands (see --help of each):
   heatmap   one number per design of a sweep (designs.csv) over 1 or 2 swept keys
   pareto    error against run time, one panel per error column (`tactip accuracy`'s CSV)
   run-motion, run-quiver, run-markers, run-indentation
-            the figures of one run (`tactip plot`'s CSVs, see the README's "Figures of one run")
+            the figures of one run (`tactip plot`'s CSVs, see docs/viewer-and-plots.md "Figures of one run")
 
 Uses only the Python standard library and matplotlib (Agg backend, no display). PNGs are
 rendered in memory and then written atomically (temporary file + rename): a failure leaves
@@ -385,7 +385,7 @@ def cmd_pareto(a):
 EVENT_STYLES = [("gross_slip_onset", "gross-slip onset", "tab:red", "-"),
                 ("incipient_onset", "incipient onset", "darkorange", "--"),
                 ("object_fall", "object fall", "black", ":")]
-RUN_FIG_DPI = 100  # the run figures are committed to the README's gallery: kept small (and 256 colours)
+RUN_FIG_DPI = 100  # the run figures are committed to docs/viewer-and-plots.md's gallery: kept small (and 256 colours)
 
 
 def read_events(path):

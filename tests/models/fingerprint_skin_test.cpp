@@ -210,8 +210,9 @@ TEST(FingerprintMechanicsTest, HalfSpaceRockingIsTheMomentOfATiltedStripsPressur
   EXPECT_THROW(RockingGelStiffness("halfspace", E, 0.02, b, w), std::invalid_argument);
 }
 
-// The presets' ridges on either gel model: the figures the key's help and the README's table
-// (README 'Ridge rocking') quote, and the hinges, tip and coupling built on them as before.
+// The presets' ridges on either gel model: the figures the key's help and the table in
+// docs/fingerprint-skins.md ('Ridge rocking') quote, and the hinges, tip and coupling built on
+// them as before.
 TEST(FingerprintMechanicsTest, HalfSpaceRockingStiffensThePresetsRidgesAsDocumented) {
   struct Quoted {
     double k_rock, k_tip, k_couple;

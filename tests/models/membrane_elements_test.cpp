@@ -47,7 +47,8 @@ Eigen::MatrixXd Assembled(const std::vector<MembraneMode>& modes, size_t n_pins)
   return K;
 }
 
-// The plane-stress sheet's polar stiffness (N/m) from its compliance, as the README gives it.
+// The plane-stress sheet's polar stiffness (N/m) from its compliance, as docs/fingerprint-skins.md
+// ('Orthotropic membrane') gives it.
 Eigen::Matrix3d SheetStiffness(double membrane_N_m, const Corrugation& c) {
   const double nu = 0.5;
   Eigen::Matrix3d S;

@@ -91,7 +91,7 @@ void DigestRecord(const RunRecord& rec, const std::string& run, std::vector<std:
 // What drives the arm in a case.
 enum class Loop { kOffline, kCatch, kStop };
 
-struct Case {
+struct DigestCase {
   std::string name;
   std::string scenario;                // "rail" or "incipient"
   std::string skin;                    // preset, or empty: the scenario's
@@ -100,11 +100,11 @@ struct Case {
 };
 
 // gtest prints a case by its name.
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const DigestCase& c, std::ostream* os) { *os << c.name; }
 
 // Short protocols (a 10 mm lift, retraction at 1-5 mm/s): each case takes seconds.
-const std::vector<Case>& Cases() {
-  static const std::vector<Case> cases = {
+const std::vector<DigestCase>& Cases() {
+  static const std::vector<DigestCase> cases = {
       {"rail-flat-1mm_s", "rail", "", {"rail.lift_mm=10", "rail.retract_speed_mm_s=1"}},
       {"rail-flat-5mm_s", "rail", "", {"rail.lift_mm=10", "rail.retract_speed_mm_s=5"}},
       {"rail-curved40-1mm_s", "rail", "", {"rail.stimulus=curved40", "rail.lift_mm=10", "rail.retract_speed_mm_s=1"}},
@@ -122,11 +122,11 @@ const std::vector<Case>& Cases() {
   return cases;
 }
 
-constexpr std::uint64_t kSeed = 11;
+constexpr std::uint64_t kDigestSeed = 11;
 constexpr double kCatchThresholdPx = 0.3;
 
 // The case's config, as `tactip generate SCENARIO --skin SKIN --set ...` resolves it.
-RailScenarioConfig CaseConfig(const Case& c) {
+RailScenarioConfig CaseConfig(const DigestCase& c) {
   ConfigSource src;
   if (!c.skin.empty()) src.overrides = SkinPresetOverrides(c.skin);
   for (const std::string& o : c.overrides) src.overrides.push_back(o);
@@ -134,11 +134,11 @@ RailScenarioConfig CaseConfig(const Case& c) {
 }
 
 // Run 0 of the case, simulated as its protocol runs it.
-RunRecord Simulate(const Case& c, const std::filesystem::path& dir) {
+RunRecord Simulate(const DigestCase& c, const std::filesystem::path& dir) {
   RailScenarioConfig cfg = CaseConfig(c);
   RunRecord rec;
   if (c.loop == Loop::kOffline) {
-    RailScenario(cfg).Run(0, kSeed, rec);
+    RailScenario(cfg).Run(0, kDigestSeed, rec);
     return rec;
   }
   if (c.loop == Loop::kCatch) {
@@ -149,20 +149,20 @@ RunRecord Simulate(const Case& c, const std::filesystem::path& dir) {
     SceneOptions every_pin;
     every_pin.all_pins_collide = true;
     const CatchOptions loop;
-    RailScenario(cfg, every_pin).Run(0, kSeed, rec, nullptr, [&](int, const RailSchedule& schedule) {
+    RailScenario(cfg, every_pin).Run(0, kDigestSeed, rec, nullptr, [&](int, const RailSchedule& schedule) {
       return std::unique_ptr<RailController>(std::make_unique<CatchController>(schedule, LoadDetector(model), loop));
     });
     return rec;
   }
   // As RunStopTrials runs a trial.
   const StopOptions loop;
-  RailScenario(cfg).Run(0, kSeed, rec, nullptr, [&](int, const RailSchedule& schedule) {
+  RailScenario(cfg).Run(0, kDigestSeed, rec, nullptr, [&](int, const RailSchedule& schedule) {
     return std::unique_ptr<RailController>(std::make_unique<StopController>(schedule, loop));
   });
   return rec;
 }
 
-std::vector<std::string> CaseLines(const Case& c, const std::filesystem::path& dir) {
+std::vector<std::string> CaseLines(const DigestCase& c, const std::filesystem::path& dir) {
   std::vector<std::string> lines;
   DigestRecord(Simulate(c, dir), c.name, lines);
   return lines;
@@ -194,10 +194,10 @@ std::string Differences(const std::vector<std::string>& recorded, const std::vec
   return out;
 }
 
-class BehaviourDigestTest : public ::testing::TestWithParam<Case> {};
+class BehaviourDigestTest : public ::testing::TestWithParam<DigestCase> {};
 
 TEST_P(BehaviourDigestTest, EveryArrayLabelEventAndAttributeIsAsRecorded) {
-  const Case& c = GetParam();
+  const DigestCase& c = GetParam();
   testing::TestTempDir dir("digest");
   const std::vector<std::string> now = CaseLines(c, dir.path());
   if (const char* write = std::getenv("TACTIP_WRITE_DIGESTS"); write != nullptr && std::strcmp(write, "1") == 0) {
@@ -221,7 +221,7 @@ TEST_P(BehaviourDigestTest, EveryArrayLabelEventAndAttributeIsAsRecorded) {
 }
 
 INSTANTIATE_TEST_SUITE_P(FixedRuns, BehaviourDigestTest, ::testing::ValuesIn(Cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) {
+                         [](const ::testing::TestParamInfo<DigestCase>& info) {
                            std::string name = info.param.name;
                            for (char& ch : name) {
                              if (ch == '-') ch = '_';

@@ -9,11 +9,11 @@
 #include <string>
 
 #include "input_error.h"
+#include "sim/base/nan.h"
 
 namespace tactip {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// Three frames of sensor "tactip" with two pins and the arm's two controls, every value

@@ -110,7 +110,8 @@ TEST_F(DatasetShardTest, ShardAttributesRoundTripAndPlainFilesHaveNone) {
   EXPECT_EQ(part.header().shard->text(), "1/3");
   EXPECT_EQ(part.header().shard->runs_total, 8);
   EXPECT_FALSE(DatasetReader(Path("plain.h5")).header().shard.has_value());
-  // Stored as the README documents: string `shard`, unsigned 64-bit `runs_total`.
+  // Stored as docs/dataset-format.md ('Shard files') documents: string `shard`, unsigned 64-bit
+  // `runs_total`.
   const hid_t file = H5Fopen(Path("part.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   const hid_t attr = H5Aopen(file, "runs_total", H5P_DEFAULT);

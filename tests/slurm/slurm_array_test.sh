@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The README's Slurm job array on a real one-node cluster: starts munged, slurmctld and
-# slurmd on localhost with a private config, submits scripts/slurm/tactip-array.sbatch for
-# a 4-run job in 2 array tasks, merges the parts and compares the result byte for byte
-# with a one-machine 'tactip generate'. Stops every daemon it started, by PID, also on
-# failure. Run by ctest (SKIP_RETURN_CODE 77).
+# The Slurm job array (docs/scaling-out.md, 'Slurm') on a real one-node cluster: starts
+# munged, slurmctld and slurmd on localhost with a private config, submits
+# scripts/slurm/tactip-array.sbatch for a 4-run job in 2 array tasks, merges the parts and
+# compares the result byte for byte with a one-machine 'tactip generate'. Stops every daemon
+# it started, by PID, also on failure. Run by ctest (SKIP_RETURN_CODE 77).
 #
 # Usage: slurm_array_test.sh TACTIP_BINARY SOURCE_DIR
 # Exit: 0 pass, 1 fail, 77 skip (not root, or slurm-wlm/munge not installed).

@@ -12,12 +12,13 @@
 
 #include "models/skin.h"
 #include "scenarios/app/cli/option_checks.h"
+#include "sim/base/number_text.h"
 #include "sim/base/progress.h"
 
 namespace tactip::cli {
 
 std::string Fmt(double v, const char* spec) {
-  return std::isnan(v) ? std::string("-") : fmt::format(fmt::runtime(spec), v);
+  return NumberCell(v, spec);
 }
 
 double Attr(const RunRecord& r, const std::string& key) {

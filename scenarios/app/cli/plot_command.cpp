@@ -68,7 +68,8 @@ std::function<int()> AddPlotCommand(CLI::App& app) {
   auto* c = app.add_subcommand("plot",
                                "Figures of one run of a dataset: pin displacement and speed over time with the "
                                "onsets, pin-velocity quivers around the onset, internal vs external markers, the "
-                               "indentation field against radius (CSVs and PNGs; see README 'Figures of one run').");
+                               "indentation field against radius (CSVs and PNGs; see docs/viewer-and-plots.md "
+                               "'Figures of one run').");
   c->add_option("FILE", a->dataset, "Dataset (HDF5) written by 'tactip generate'.")
       ->required()
       ->check(NonEmpty("a dataset file"));

@@ -10,13 +10,12 @@
 
 #include "scenarios/studies/accuracy/compare.h"
 #include "scenarios/studies/contact_checks/contact_checks.h"
+#include "sim/base/nan.h"
 #include "sim/simulation.h"
 
 namespace tactip {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Camera noise off: the study compares what the physics does, not the noise draws.
 const std::vector<std::string> kNoiseOff = {"sensor.pixel_noise_px=0", "sensor.dropout_prob=0",

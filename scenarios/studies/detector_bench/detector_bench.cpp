@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "sim/base/number_text.h"
 #include "detectors/incipient.h"
 #include "detectors/logreg.h"
 #include "detectors/svm.h"
@@ -35,8 +36,6 @@ HardwareReference Reference(const std::string& name) {
   auto it = table.find(name);
   return it == table.end() ? HardwareReference{} : it->second;
 }
-
-std::string Num(double v, const char* spec) { return std::isnan(v) ? "-" : fmt::format(fmt::runtime(spec), v); }
 
 void Log(const BenchOptions& opts, const std::string& s) {
   if (opts.log) opts.log(s);
@@ -189,8 +188,8 @@ std::string FormatBenchTable(const BenchResult& r) {
     const Evaluation& e = row.eval;
     out += fmt::format("{:<17} {:>6.3f} {:>6.3f} {:>6.3f} {:>7.2f} {:>7} {:>7} {:>8} {:>9.1f} {:>9.1f} | {:>13} {:>17} {:>17}\n",
                        e.detector, e.confusion.F1(), e.confusion.Precision(), e.confusion.Recall(),
-                       100.0 * e.confusion.Accuracy(), Num(e.delay_frames_mean, "{:.1f}"),
-                       Num(e.delay_ms_mean, "{:.0f}"), Num(e.fp_per_min, "{:.2f}"), e.us_per_frame_mean,
+                       100.0 * e.confusion.Accuracy(), NumberCell(e.delay_frames_mean, "{:.1f}"),
+                       NumberCell(e.delay_ms_mean, "{:.0f}"), NumberCell(e.fp_per_min, "{:.2f}"), e.us_per_frame_mean,
                        e.us_per_frame_p99, row.hardware.f1, row.hardware.accuracy, row.hardware.time);
   }
   return out;
@@ -204,7 +203,7 @@ std::string FormatEvaluation(const Evaluation& e, bool per_run) {
     for (const auto& x : e.runs) {
       out += fmt::format("{:>5} {:>6} {:>6} {:>6} {:>6} {:>7} {:>8} {:>8}\n", x.run, x.confusion.tp, x.confusion.fp,
                          x.confusion.tn, x.confusion.fn, x.onset_frame, x.detection_frame,
-                         Num(x.delay_frames, "{:.0f}"));
+                         NumberCell(x.delay_frames, "{:.0f}"));
     }
   }
   const Confusion& c = e.confusion;
@@ -213,8 +212,8 @@ std::string FormatEvaluation(const Evaluation& e, bool per_run) {
   out += fmt::format("confusion (frames): TP {} FP {} TN {} FN {}\n", c.tp, c.fp, c.tn, c.fn);
   out += fmt::format("delay after onset: {} frames ({} ms), detected in {:.0f} % of runs; false positives {} per "
                      "minute of static data; {:.1f} us/frame mean, {:.1f} us p99\n",
-                     Num(e.delay_frames_mean, "{:.2f}"), Num(e.delay_ms_mean, "{:.1f}"), 100.0 * e.detected_fraction,
-                     Num(e.fp_per_min, "{:.3f}"), e.us_per_frame_mean, e.us_per_frame_p99);
+                     NumberCell(e.delay_frames_mean, "{:.2f}"), NumberCell(e.delay_ms_mean, "{:.1f}"), 100.0 * e.detected_fraction,
+                     NumberCell(e.fp_per_min, "{:.3f}"), e.us_per_frame_mean, e.us_per_frame_p99);
   return out;
 }
 

@@ -8,12 +8,12 @@
 
 #include "scenarios/studies/run_signals/incipient_signals.h"
 #include "scenarios/studies/run_signals/run_signals.h"
+#include "sim/base/nan.h"
 
 namespace tactip {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPeakWindowS = 0.3;  // gross-slip signal: peak within this long after the onset
 
 // Mean and sample standard deviation of the finite values.

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "scenarios/studies/run_signals/run_signals.h"
+#include "sim/base/nan.h"
 
 namespace tactip {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Consecutive frames from `first` whose unsmoothed mean pin speed exceeds `level_px`.
 int FramesAbove(const RunRecord& run, const SensorRecord& sensor, size_t first, double level_px) {

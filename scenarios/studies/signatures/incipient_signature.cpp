@@ -9,12 +9,12 @@
 #include "scenarios/studies/run_signals/incipient_signals.h"
 #include "scenarios/studies/run_signals/run_signals.h"
 #include "scenarios/studies/signatures/held_noise.h"
+#include "sim/base/nan.h"
 
 namespace tactip {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Whether pin i is labelled slipping (in contact and sliding) at frame f.
 bool LabelledSlipping(const SensorRecord& sensor, size_t f, size_t i) {

@@ -11,8 +11,6 @@ namespace tactip {
 
 namespace {
 
-constexpr const char* kNotApplicable = "n/a";
-
 // A number with 6 significant digits, or "none" (NaN: did not happen).
 std::string Value(double v) { return std::isnan(v) ? std::string("none") : fmt::format("{:.6g}", v); }
 

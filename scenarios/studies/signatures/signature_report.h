@@ -14,6 +14,9 @@
 
 namespace tactip {
 
+/// A signature table's cell for a figure the run does not have (no gross or incipient phase).
+inline constexpr const char* kNotApplicable = "n/a";
+
 /// The signatures of one run as one sensor recorded them; nullopt = does not apply.
 struct SignatureRun {
   int run = 0;                  ///< run index
@@ -77,7 +80,8 @@ SignatureAcceptance JudgeSignatures(const std::vector<SignatureRun>& runs);
 /// happen; the headings name the options.
 std::string FormatSignatureReport(const std::vector<SignatureRun>& runs, const SignatureOptions& options);
 
-/// One CSV row per run (columns documented in the README); "n/a" / "none" as in the table.
+/// One CSV row per run (columns documented in docs/fingerprint-skins.md 'Slip signatures against the
+/// hardware'); "n/a" / "none" as in the table.
 std::string SignatureCsv(const std::vector<SignatureRun>& runs);
 
 }  // namespace tactip

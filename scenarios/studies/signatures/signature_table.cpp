@@ -9,19 +9,17 @@
 #include <fmt/format.h>
 
 #include "scenarios/studies/signatures/signature_report.h"
+#include "sim/base/nan.h"
+#include "sim/base/number_text.h"
 
 namespace tactip {
 
 namespace {
 
-constexpr const char* kNotApplicable = "n/a";
 constexpr const char* kNone = "none";
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A number, or "none" for an event that did not happen (NaN).
-std::string Num(double v, const char* spec = "{:.2f}") {
-  return std::isnan(v) ? kNone : fmt::format(fmt::runtime(spec), v);
-}
+std::string SignatureCell(double v, const char* spec = "{:.2f}") { return NumberCell(v, spec, kNone); }
 
 // "pass"/"fail" of one run against a threshold (a NaN figure fails).
 std::string PassCell(bool pass) { return pass ? "pass" : "fail"; }
@@ -34,8 +32,8 @@ std::string Spread(std::vector<double> values, const char* spec = "{:.2f}") {
   std::sort(values.begin(), values.end());
   const size_t k = values.size();
   const double median = k % 2 ? values[k / 2] : 0.5 * (values[k / 2 - 1] + values[k / 2]);
-  return fmt::format("{} [{}, {}] ({} of {} runs)", Num(median, spec), Num(values.front(), spec),
-                     Num(values.back(), spec), k, runs);
+  return fmt::format("{} [{}, {}] ({} of {} runs)", SignatureCell(median, spec), SignatureCell(values.front(), spec),
+                     SignatureCell(values.back(), spec), k, runs);
 }
 
 // "passed/runs, needs N: PASS|FAIL" of one acceptance count.
@@ -57,7 +55,7 @@ struct GrossColumns {
 
 // One row of the gross-slip table; fills the columns.
 std::string GrossRow(const SignatureRun& r, GrossColumns& c) {
-  if (!r.gross) return fmt::format("{:>4} {:>6} {:>6}\n", r.run, Num(r.speed_mm_s), kNotApplicable);
+  if (!r.gross) return fmt::format("{:>4} {:>6} {:>6}\n", r.run, SignatureCell(r.speed_mm_s), kNotApplicable);
   const GrossSignature& g = *r.gross;
   const double width = g.spike_width_frames < 0 ? kNaN : g.spike_width_frames;
   c.noise.push_back(g.noise.mean_speed_px);
@@ -71,11 +69,11 @@ std::string GrossRow(const SignatureRun& r, GrossColumns& c) {
   c.step.push_back(g.step_px);
   c.after_w5.push_back(g.after_w5_px);
   return fmt::format("{:>4} {:>6} {:>6} {:>8} {:>6} {:>6} {:>5} {:>6} {:>7} {:>7} {:>7} {:>7} {:>6} {:>8}\n", r.run,
-                     Num(r.speed_mm_s), Num(g.noise.mean_speed_px), Num(g.noise.mean_speed_w5_px),
-                     Num(g.noise.Level()), std::isnan(width) ? kNotApplicable : std::to_string(g.spike_width_frames),
-                     PassCell(g.spike_width_frames >= kAcceptedSpikeFrames), Num(g.spike_peak_px),
-                     Num(g.spike_peak_w5_px), Num(g.colinear_onset), Num(g.colinear_later),
-                     Num(g.contact_lost_s, "{:.3f}"), Num(g.step_px), Num(g.after_w5_px));
+                     SignatureCell(r.speed_mm_s), SignatureCell(g.noise.mean_speed_px), SignatureCell(g.noise.mean_speed_w5_px),
+                     SignatureCell(g.noise.Level()), std::isnan(width) ? kNotApplicable : std::to_string(g.spike_width_frames),
+                     PassCell(g.spike_width_frames >= kAcceptedSpikeFrames), SignatureCell(g.spike_peak_px),
+                     SignatureCell(g.spike_peak_w5_px), SignatureCell(g.colinear_onset), SignatureCell(g.colinear_later),
+                     SignatureCell(g.contact_lost_s, "{:.3f}"), SignatureCell(g.step_px), SignatureCell(g.after_w5_px));
 }
 
 // The gross-slip per-run table and summary.
@@ -131,9 +129,9 @@ std::string AlarmPinsSummary(const IncipientColumns& c) {
 // One row of the incipient table; fills the columns. Without an incipient phase the
 // amplitudes and sectors do not apply; without external markers the correlation.
 std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
-  if (!r.incipient) return fmt::format("{:>4} {:>6} {:>9}\n", r.run, Num(r.speed_mm_s), kNotApplicable);
+  if (!r.incipient) return fmt::format("{:>4} {:>6} {:>9}\n", r.run, SignatureCell(r.speed_mm_s), kNotApplicable);
   const IncipientSignature& s = *r.incipient;
-  auto phase = [&](double v) { return s.has_phase ? Num(v) : std::string(kNotApplicable); };
+  auto phase = [&](double v) { return s.has_phase ? SignatureCell(v) : std::string(kNotApplicable); };
   c.visible_lead.push_back(s.visible_lead_s);
   if (!std::isnan(s.sustained_excess_px)) c.excess.push_back(s.sustained_excess_px);
   if (!std::isnan(s.pin_sustained_excess_px)) c.pin_excess.push_back(s.pin_sustained_excess_px);
@@ -148,15 +146,15 @@ std::string IncipientRow(const SignatureRun& r, IncipientColumns& c) {
   const std::string first = s.sectors.first.empty() ? kNone : s.sectors.first;
   const std::string order = s.sectors.order.empty() ? kNone : s.sectors.order;
   return fmt::format("{:>4} {:>6} {:>9} {:>8} {:>5} {:>6} {:>6} {:>6} {:>6} {:>9} {:>8} {:>5} {:>8} {:>7} {:>7} {:>9} {:>6}\n",
-                     r.run, Num(r.speed_mm_s), Num(s.visible_s, "{:.3f}"), Num(s.visible_lead_s, "{:.3f}"),
-                     PassCell(s.visible_lead_s >= kAcceptedLeadS), Num(s.sustained_excess_px),
-                     Num(s.pin_sustained_excess_px),
+                     r.run, SignatureCell(r.speed_mm_s), SignatureCell(s.visible_s, "{:.3f}"), SignatureCell(s.visible_lead_s, "{:.3f}"),
+                     PassCell(s.visible_lead_s >= kAcceptedLeadS), SignatureCell(s.sustained_excess_px),
+                     SignatureCell(s.pin_sustained_excess_px),
                      phase(s.amplitude_w1_px),
-                     phase(s.amplitude_w5_px), Num(s.alarm_s, "{:.3f}"), Num(s.alarm_lead_s, "{:.3f}"),
+                     phase(s.amplitude_w5_px), SignatureCell(s.alarm_s, "{:.3f}"), SignatureCell(s.alarm_lead_s, "{:.3f}"),
                      PassCell(s.alarm_lead_s >= kAcceptedLeadS), AlarmPinsCell(s),
                      s.alarm_sector.empty() ? kNone : s.alarm_sector, s.has_phase ? first : kNotApplicable,
                      s.has_phase ? order : kNotApplicable,
-                     s.has_external ? Num(s.tracking_correlation, "{:.3f}") : kNotApplicable);
+                     s.has_external ? SignatureCell(s.tracking_correlation, "{:.3f}") : kNotApplicable);
 }
 
 // How the runs' sectors were ordered: "by physics step", "by frame" or "by physics step in k of n".

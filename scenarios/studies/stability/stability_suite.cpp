@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "sim/base/nan.h"
+#include "sim/base/number_text.h"
 #include "sim/config.h"
 #include "sim/simulation.h"
 
@@ -18,7 +20,6 @@ namespace tactip {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::uint64_t kSeed = 1;  // every case simulates run 0 of this master seed
 
 using E = ExpectHeld;
@@ -132,7 +133,7 @@ std::vector<StabilityCase> StepGeometryAndRigCases() {
       // The incipient rig: v2 on acrylic, external camera, velocity weakening, per-pin spread.
       // At its own retraction speed: at the short protocol's 1 mm/s an edge pin sliding out of the
       // contact bounces off the object once during a precursor slip in some runs (flicker 3, at
-      // 0.5 and 0.25 ms alike; README 'Known limitations').
+      // 0.5 and 0.25 ms alike; docs/limitations.md 'Numerics').
       {"incipient-rig", "the incipient scenario's defaults on the short protocol, retracting at 0.3 mm/s", "",
        {"rail.retract_speed_mm_s=0.3"}, E::kHeld, false, "incipient"},
   };
@@ -165,8 +166,6 @@ std::string Csv(const std::string& s) {
   for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
   return q + "\"";
 }
-
-std::string Num(double v, const char* spec) { return std::isnan(v) ? "-" : fmt::format(fmt::runtime(spec), v); }
 
 const char* ExpectName(ExpectHeld e) {
   switch (e) {
@@ -374,13 +373,13 @@ std::string FormatStabilityTable(const std::vector<StabilityResult>& results) {
                                 "e_gain", "sim_s", "wall_s", "exp", "sets");
   for (const auto& r : results) {
     const StabilityCase& c = *r.c;
-    const std::string dt = Num(r.timestep_s * 1e3, "{:.3g}");
+    const std::string dt = NumberCell(r.timestep_s * 1e3, "{:.3g}");
     if (r.run) {
       const RailRunSummary& s = *r.run;
       out += fmt::format("{:<24} {:<8} {:>6} {:>8} {:>8} {:>6} {:>8} {:>8} {:>8} {:>7.2f} {:>6.2f} {:>6}  {}\n", c.name,
-                         OutcomeName(r.outcome), dt, s.held ? "yes" : "no", Num(s.gross_slip_onset_s, "{:.3f}"),
-                         s.health.flicker_max, Num(s.health.pin_speed_px, "{:.3f}"),
-                         Num(s.health.stick_creep_um, "{:.2f}"), Num(s.health.energy_gain, "{:.1e}"), s.sim_time_s,
+                         OutcomeName(r.outcome), dt, s.held ? "yes" : "no", NumberCell(s.gross_slip_onset_s, "{:.3f}"),
+                         s.health.flicker_max, NumberCell(s.health.pin_speed_px, "{:.3f}"),
+                         NumberCell(s.health.stick_creep_um, "{:.2f}"), NumberCell(s.health.energy_gain, "{:.1e}"), s.sim_time_s,
                          r.wall_time_s, c.held == ExpectHeld::kAny ? "-" : (c.held == ExpectHeld::kHeld ? "yes" : "no"),
                          CaseSettings(c));
     } else {
@@ -409,17 +408,17 @@ std::string StabilityCsv(const std::vector<StabilityResult>& results) {
   for (const auto& r : results) {
     const StabilityCase& c = *r.c;
     out += fmt::format("{},{},{},{},{},{},", Csv(c.name), Csv(c.scenario), Csv(CaseSettings(c)), ExpectName(c.held),
-                       OutcomeName(r.outcome), Num(r.timestep_s, "{}"));
+                       OutcomeName(r.outcome), NumberCell(r.timestep_s, "{}"));
     if (r.run) {
       const RailRunSummary& s = *r.run;
-      out += fmt::format("{},{},{},{},{},{},{},{},{},{},", s.held ? 1 : 0, Num(s.gross_slip_onset_s, "{}"),
-                         Num(s.object_fall_s, "{}"), Num(s.predicted_onset_s, "{}"), s.health.flicker_max,
-                         Num(s.health.pin_speed_px, "{}"), Num(s.health.stick_creep_um, "{}"),
-                         Num(s.health.energy_gain, "{}"), s.mujoco_warnings, Num(s.sim_time_s, "{}"));
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{},", s.held ? 1 : 0, NumberCell(s.gross_slip_onset_s, "{}"),
+                         NumberCell(s.object_fall_s, "{}"), NumberCell(s.predicted_onset_s, "{}"), s.health.flicker_max,
+                         NumberCell(s.health.pin_speed_px, "{}"), NumberCell(s.health.stick_creep_um, "{}"),
+                         NumberCell(s.health.energy_gain, "{}"), s.mujoco_warnings, NumberCell(s.sim_time_s, "{}"));
     } else {
       out += ",,,,,,,,,,";
     }
-    out += fmt::format("{},{},{}\n", Num(r.wall_time_s, "{:.3f}"), Csv(r.message),
+    out += fmt::format("{},{},{}\n", NumberCell(r.wall_time_s, "{:.3f}"), Csv(r.message),
                        Csv(fmt::format("{}", fmt::join(r.suite_sets, " "))));
   }
   return out;

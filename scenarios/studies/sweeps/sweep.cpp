@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "sim/base/number_text.h"
 #include "scenarios/figures/plot.h"
 #include "sim/base/files.h"
 
@@ -25,7 +26,6 @@ std::string DesignText(const SweepDesign& d) {
   return out.empty() ? "(base config)" : out;
 }
 
-std::string Num(double v) { return std::isnan(v) ? std::string("nan") : fmt::format("{:.6g}", v); }
 
 /// One PNG heatmap per metric from designs.csv: rows = first key, columns = second (or a
 /// single row for one key).
@@ -88,11 +88,11 @@ std::string SweepDesignsCsv(const std::vector<SweepParam>& params, const std::ve
     out += std::to_string(i);
     for (const auto& kv : r.design) out += "," + kv.second;
     out += fmt::format(",{},{},{},{}", r.n_pins, r.n_collidable, r.summary.runs, r.summary.with_incipient);
-    for (const auto& m : SweepMetrics()) out += "," + Num(m.value(r));
-    out += fmt::format(",{},{},{},{},{},{},{},{},{},{:.3f},{:.3f}\n", Num(r.summary.lead_fall_mean_s),
-                       r.summary.alarm_before_gross, Num(r.summary.first_slip_radius_ratio_mean),
-                       Num(r.summary.tracking_correlation_mean), Num(r.summary.tracking_error_mean),
-                       Num(r.shear_relaxation_s), r.summary.east_west_first, r.summary.south_before_north,
+    for (const auto& m : SweepMetrics()) out += "," + NumberCell(m.value(r), "{:.6g}", "nan");
+    out += fmt::format(",{},{},{},{},{},{},{},{},{},{:.3f},{:.3f}\n", NumberCell(r.summary.lead_fall_mean_s, "{:.6g}", "nan"),
+                       r.summary.alarm_before_gross, NumberCell(r.summary.first_slip_radius_ratio_mean, "{:.6g}", "nan"),
+                       NumberCell(r.summary.tracking_correlation_mean, "{:.6g}", "nan"), NumberCell(r.summary.tracking_error_mean, "{:.6g}", "nan"),
+                       NumberCell(r.shear_relaxation_s, "{:.6g}", "nan"), r.summary.east_west_first, r.summary.south_before_north,
                        r.summary.hardware_order, r.sim_time_s, r.wall_time_s);
   }
   return out;

@@ -39,7 +39,7 @@ struct SweepDesignResult {
   int n_pins = 0;
   int n_collidable = 0;
   /// Time constant of the skin's collective shear mode, c_tip / k_tip (s): the joint
-  /// damping a membrane lattice needs for stability at the timestep slows it (see README).
+  /// damping a membrane lattice needs for stability at the timestep slows it (see docs/limitations.md 'Numerics').
   double shear_relaxation_s = 0.0;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;

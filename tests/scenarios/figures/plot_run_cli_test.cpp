@@ -26,10 +26,10 @@ using testing::RunTactip;
 using testing::Slurp;
 
 /// A short rail run (2 mm/s, 10 mm lift, 0.1 s hold: about a second of wall time).
-const std::string kQuickRail =
+const std::string kQuickPlotRail =
     "generate rail --runs 1 --quiet --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1";
 /// CSV cells carry 9 significant digits (px values of a few hundred).
-constexpr double kCellTol = 1e-5;
+constexpr double kPlotCellTol = 1e-5;
 
 /// Two datasets made once for the suite: a smooth-skin rail run, and the same on the acrylic
 /// plate with external markers.
@@ -39,8 +39,8 @@ class PlotRunCliTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("tactip_PlotRunCliTest_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    ASSERT_EQ(RunTactip(kQuickRail + " --out " + (dir_ / "rail.h5").string(), dir_).code, 0);
-    ASSERT_EQ(RunTactip(kQuickRail + " --stimulus acrylic --set external.enabled=true --out " +
+    ASSERT_EQ(RunTactip(kQuickPlotRail + " --out " + (dir_ / "rail.h5").string(), dir_).code, 0);
+    ASSERT_EQ(RunTactip(kQuickPlotRail + " --stimulus acrylic --set external.enabled=true --out " +
                             (dir_ / "acrylic.h5").string(),
                         dir_)
                   .code,
@@ -106,20 +106,20 @@ TEST_F(PlotRunCliTest, TheCsvsHoldTheDatasetsValues) {
   // Events: the run's onset time.
   const auto events = ParseCsv(Slurp(dir_ / "csv/events.csv"));
   ASSERT_EQ(events.size(), 3u);
-  EXPECT_NEAR(Num(events[0], "time_s"), run.attrs.at("gross_slip_onset_s"), kCellTol);
+  EXPECT_NEAR(Num(events[0], "time_s"), run.attrs.at("gross_slip_onset_s"), kPlotCellTol);
   // Motion: frame 100's mean displacement from frame 0 over all pins.
   const auto motion = ParseCsv(Slurp(dir_ / "csv/motion.csv"));
   ASSERT_EQ(motion.size(), run.frames());
   double mean = 0.0;
   for (size_t i = 0; i < n; ++i) mean += std::hypot(px(s.pos_px, 100, i, 0) - px(s.pos_px, 0, i, 0),
                                                    px(s.pos_px, 100, i, 1) - px(s.pos_px, 0, i, 1));
-  EXPECT_NEAR(Num(motion[100], "mean_disp_px"), mean / static_cast<double>(n), kCellTol);
+  EXPECT_NEAR(Num(motion[100], "mean_disp_px"), mean / static_cast<double>(n), kPlotCellTol);
   // Quiver: every row's velocity is its frame's position minus the previous frame's.
   for (const auto& row : ParseCsv(Slurp(dir_ / "csv/quiver.csv"))) {
     const auto f = static_cast<size_t>(Num(row, "frame")), i = static_cast<size_t>(Num(row, "pin"));
     ASSERT_GT(f, 0u);
-    EXPECT_NEAR(Num(row, "du_px"), px(s.pos_px, f, i, 0) - px(s.pos_px, f - 1, i, 0), kCellTol);
-    EXPECT_NEAR(Num(row, "dv_px"), px(s.pos_px, f, i, 1) - px(s.pos_px, f - 1, i, 1), kCellTol);
+    EXPECT_NEAR(Num(row, "du_px"), px(s.pos_px, f, i, 0) - px(s.pos_px, f - 1, i, 0), kPlotCellTol);
+    EXPECT_NEAR(Num(row, "dv_px"), px(s.pos_px, f, i, 1) - px(s.pos_px, f - 1, i, 1), kPlotCellTol);
     EXPECT_EQ(Num(row, "contact"), s.pin_contact[f * n + i]);
   }
   // Markers: the external markers' mean speed at frame 100.
@@ -127,7 +127,7 @@ TEST_F(PlotRunCliTest, TheCsvsHoldTheDatasetsValues) {
   double ext = 0.0;
   for (size_t i = 0; i < n; ++i) ext += std::hypot(px(s.external_px, 100, i, 0) - px(s.external_px, 99, i, 0),
                                                   px(s.external_px, 100, i, 1) - px(s.external_px, 99, i, 1));
-  EXPECT_NEAR(Num(markers[100], "external_speed_px_frame"), ext / static_cast<double>(n), kCellTol);
+  EXPECT_NEAR(Num(markers[100], "external_speed_px_frame"), ext / static_cast<double>(n), kPlotCellTol);
   // Indentation: the centre pin is pressed in along the axis, contacts as stored.
   const auto indent = ParseCsv(Slurp(dir_ / "csv/indentation.csv"));
   ASSERT_EQ(indent.size(), n);

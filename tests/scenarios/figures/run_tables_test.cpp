@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/base/nan.h"
 #include "tests/scenarios/csv_table.h"
 #include "input_error.h"
 
@@ -21,10 +22,9 @@ using testing::Num;
 using testing::ParseCsv;
 
 /// CSV cells carry 9 significant digits (px values of a few hundred).
-constexpr double kCellTol = 1e-6;
+constexpr double kTableCellTol = 1e-6;
 /// Axial displacements come from float metres (~0.01 m): a few 1e-7 mm of rounding each.
 constexpr double kAxialTolMm = 1e-5;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const ImageCentre kCentre{320.0, 240.0};
 
 /// A run worked by hand. Pins at rest (frames 0–2): 0 at the centre (320, 240), 1 at
@@ -68,7 +68,7 @@ TEST(RunTablesTest, EventsCsvGivesEachEventsTimeAndFrameAndEmptyCellsForOneThatD
   const auto rows = ParseCsv(EventsCsv(HandRun()));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].at("event"), "gross_slip_onset");
-  EXPECT_NEAR(Num(rows[0], "time_s"), 0.035, kCellTol);
+  EXPECT_NEAR(Num(rows[0], "time_s"), 0.035, kTableCellTol);
   EXPECT_EQ(rows[0].at("frame"), "4");  // first frame at or after 0.035 s
   EXPECT_EQ(rows[1].at("event"), "incipient_onset");
   EXPECT_EQ(rows[1].at("time_s"), "");
@@ -97,13 +97,13 @@ TEST(RunTablesTest, MotionCsvHasDisplacementsFromTheFirstFrameAndFrameToFrameSpe
   EXPECT_EQ(rows[0].at("mean_speed_px_frame"), "");
   EXPECT_EQ(Num(rows[0], "mean_disp_px"), 0.0);
   // Frame 3: pin 1 has moved 5 px, pin 2 3 px, in this frame.
-  EXPECT_NEAR(Num(rows[3], "mean_disp_px"), 8.0 / 3.0, kCellTol);
-  EXPECT_NEAR(Num(rows[3], "pin1_disp_px"), 5.0, kCellTol);
-  EXPECT_NEAR(Num(rows[3], "pin2_disp_px"), 3.0, kCellTol);
-  EXPECT_NEAR(Num(rows[3], "mean_speed_px_frame"), 8.0 / 3.0, kCellTol);
-  EXPECT_NEAR(Num(rows[3], "max_speed_px_frame"), 5.0, kCellTol);
+  EXPECT_NEAR(Num(rows[3], "mean_disp_px"), 8.0 / 3.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[3], "pin1_disp_px"), 5.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[3], "pin2_disp_px"), 3.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[3], "mean_speed_px_frame"), 8.0 / 3.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[3], "max_speed_px_frame"), 5.0, kTableCellTol);
   // Frame 4: still displaced, no longer moving; the gross-slip label is on.
-  EXPECT_NEAR(Num(rows[4], "mean_disp_px"), 8.0 / 3.0, kCellTol);
+  EXPECT_NEAR(Num(rows[4], "mean_disp_px"), 8.0 / 3.0, kTableCellTol);
   EXPECT_EQ(Num(rows[4], "max_speed_px_frame"), 0.0);
   EXPECT_EQ(rows[4].at("gross_slip"), "1");
   EXPECT_EQ(rows[3].at("gross_slip"), "0");
@@ -138,9 +138,9 @@ TEST(RunTablesTest, QuiverCsvHoldsEachPinsPositionAndVelocityInTheThreeFrames) {
   EXPECT_EQ(pin1_at.at("panel"), "at");
   EXPECT_EQ(pin1_at.at("frame"), "3");
   EXPECT_EQ(pin1_at.at("pin"), "1");
-  EXPECT_NEAR(Num(pin1_at, "u_px"), 333.0, kCellTol);
-  EXPECT_NEAR(Num(pin1_at, "du_px"), 3.0, kCellTol);
-  EXPECT_NEAR(Num(pin1_at, "dv_px"), 4.0, kCellTol);
+  EXPECT_NEAR(Num(pin1_at, "u_px"), 333.0, kTableCellTol);
+  EXPECT_NEAR(Num(pin1_at, "du_px"), 3.0, kTableCellTol);
+  EXPECT_NEAR(Num(pin1_at, "dv_px"), 4.0, kTableCellTol);
   EXPECT_EQ(pin1_at.at("contact"), "1");
   EXPECT_EQ(rows[7].at("panel"), "after");
   EXPECT_EQ(Num(rows[7], "du_px"), 0.0);
@@ -157,9 +157,9 @@ TEST(RunTablesTest, MarkersCsvComparesInternalAndExternalMeansAndNeedsExternalMa
   const auto rows = ParseCsv(MarkersCsv(run, run.sensors[0]));
   ASSERT_EQ(rows.size(), 6u);
   // The mirrored external markers move by the same distances.
-  EXPECT_NEAR(Num(rows[3], "internal_disp_px"), 8.0 / 3.0, kCellTol);
-  EXPECT_NEAR(Num(rows[3], "external_disp_px"), 8.0 / 3.0, kCellTol);
-  EXPECT_NEAR(Num(rows[3], "external_speed_px_frame"), 8.0 / 3.0, kCellTol);
+  EXPECT_NEAR(Num(rows[3], "internal_disp_px"), 8.0 / 3.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[3], "external_disp_px"), 8.0 / 3.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[3], "external_speed_px_frame"), 8.0 / 3.0, kTableCellTol);
   EXPECT_EQ(rows[0].at("internal_speed_px_frame"), "");
   run.sensors[0].external_px.clear();
   EXPECT_THROW(MarkersCsv(run, run.sensors[0]), std::logic_error);
@@ -179,15 +179,15 @@ TEST(RunTablesTest, IndentationCsvHasRadialImageAndAxialDisplacementsAgainstTheR
   const RunRecord run = HandRun();
   const auto rows = ParseCsv(IndentationCsv(run.sensors[0], 1, 3, kCentre));
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_NEAR(Num(rows[0], "rest_radius_px"), 0.0, kCellTol);
+  EXPECT_NEAR(Num(rows[0], "rest_radius_px"), 0.0, kTableCellTol);
   EXPECT_EQ(Num(rows[0], "radial_disp_px"), 0.0);  // at the centre: no radial direction
   EXPECT_NEAR(Num(rows[0], "axial_in_mm"), 1.5, kAxialTolMm);
-  EXPECT_NEAR(Num(rows[1], "rest_radius_px"), 10.0, kCellTol);
-  EXPECT_NEAR(Num(rows[1], "radial_disp_px"), 3.0, kCellTol);  // (3, 4) along (1, 0)
+  EXPECT_NEAR(Num(rows[1], "rest_radius_px"), 10.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[1], "radial_disp_px"), 3.0, kTableCellTol);  // (3, 4) along (1, 0)
   EXPECT_EQ(rows[1].at("contact"), "1");
-  EXPECT_NEAR(Num(rows[1], "normal_N"), 0.5, kCellTol);
-  EXPECT_NEAR(Num(rows[2], "rest_radius_px"), 20.0, kCellTol);
-  EXPECT_NEAR(Num(rows[2], "radial_disp_px"), 3.0, kCellTol);  // (0, 3) along (0, 1)
+  EXPECT_NEAR(Num(rows[1], "normal_N"), 0.5, kTableCellTol);
+  EXPECT_NEAR(Num(rows[2], "rest_radius_px"), 20.0, kTableCellTol);
+  EXPECT_NEAR(Num(rows[2], "radial_disp_px"), 3.0, kTableCellTol);  // (0, 3) along (0, 1)
   EXPECT_NEAR(Num(rows[2], "axial_in_mm"), 0.0, kAxialTolMm);
   EXPECT_EQ(rows[2].at("contact"), "0");
 }

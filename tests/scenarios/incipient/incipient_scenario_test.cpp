@@ -221,8 +221,9 @@ TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyAtLeastHalfASecondBefor
   TACTIP_LONG_EXPERIMENT();
   // The hardware finding: incipient slip >= 0.5 s before the object falls. The
   // bulk-subtraction detector (W = 5, s_thr = 0.2 px, I_thr = 4) never alarms before any
-  // pin slips. At the validated 1 ms step it alarms at the fall, not before it (README,
-  // "Known limitations"); at 2 ms its early alarms came with the integration's pin jumps.
+  // pin slips. At the validated 1 ms step it alarms at the fall, not before it
+  // (docs/limitations.md, 'Known limitations'); at 2 ms its early alarms came with the
+  // integration's pin jumps.
   std::vector<int> seeds(10);
   std::iota(seeds.begin(), seeds.end(), 1);
   int alarms = 0;
@@ -260,7 +261,7 @@ TEST_F(IncipientScenarioTest, SlipMemoryMakesTheOnsetsConvergeAsTheStepHalves) {
   TACTIP_LONG_EXPERIMENT();
   // The same v2 run at 0.5 ms (the default) and 0.25 ms: with the scenario's slip memory the
   // velocity-weakening law has no instantaneous negative damping, so the onsets no longer
-  // depend on the step (README, "Accuracy"; before the memory this run's two onsets lay
+  // depend on the step (docs/numerics.md, 'Accuracy'; before the memory this run's two onsets lay
   // more than 30 ms apart).
   // On the scenario's own 50 mm lift (the onsets' timing was measured there).
   ASSERT_GT(IncipientDefaults().contact.slip_memory_um, 0.0);
@@ -280,7 +281,7 @@ TEST_F(IncipientScenarioTest, SlipMemoryMakesTheOnsetsConvergeAsTheStepHalves) {
   ASSERT_TRUE(std::isfinite(fine.gross_slip_onset_s));
   EXPECT_EQ(Attr(coarse, "health_ok"), 1.0) << coarse.text_attrs.at("health_reason");
   // At 0.25 ms an edge pin sliding out of the contact bounces off the object once in this run
-  // (flicker 3 against 2; README 'Known limitations'); nothing else is flagged.
+  // (flicker 3 against 2; docs/limitations.md, 'Numerics'); nothing else is flagged.
   EXPECT_LE(fine.health.flicker_max, 3) << fine.health.reason;
   EXPECT_EQ(fine.health.reason.find(';'), std::string::npos) << fine.health.reason;
   if (!fine.health.ok) {
@@ -288,7 +289,8 @@ TEST_F(IncipientScenarioTest, SlipMemoryMakesTheOnsetsConvergeAsTheStepHalves) {
   }
   // Measured with the preset's soft gel and clamped rim (seed 1): 17.163 s at 0.5 ms, 17.175 s
   // at 0.25 and 0.125 ms; `tactip accuracy incipient` puts the default 21.8 ms from its
-  // 0.125 ms reference (README, "Accuracy"); the incipient onset at 13.450 s at all three.
+  // 0.125 ms reference (docs/numerics.md, 'Accuracy'); the incipient onset at 13.450 s at all
+  // three.
   EXPECT_NEAR(Attr(coarse, "gross_slip_onset_s"), fine.gross_slip_onset_s, 0.02);
   EXPECT_NEAR(Attr(coarse, "incipient_onset_s"), fine.incipient_onset_s, 0.011);
 }

@@ -6,12 +6,11 @@
 #include <limits>
 
 #include "scenarios/incipient_stop/stop_trials.h"
+#include "sim/base/nan.h"
 #include "tests/input_error.h"
 
 namespace tactip {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 RailRunSummary Summary(double stop_s, double onset_s, double fall_s) {
   RailRunSummary s;

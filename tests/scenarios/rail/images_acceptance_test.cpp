@@ -15,7 +15,7 @@
 namespace tactip {
 namespace {
 
-constexpr double kWithinPx = 1.0;          // the acceptance radius
+constexpr double kAcceptWithinPx = 1.0;          // the acceptance radius
 constexpr double kMinRecovered = 0.99;     // share of (frame, pin) samples within it
 constexpr double kMaxMissShare = 0.01;     // share of samples without a blob in the gate
 
@@ -61,7 +61,7 @@ Recovery RunAndScore(const RailScenarioConfig& c) {
     const auto truth = camera.Project({s.pos_m[3 * k], s.pos_m[3 * k + 1], s.pos_m[3 * k + 2]});
     const auto first = camera.Project({s.pos_m[3 * (k % n)], s.pos_m[3 * (k % n) + 1], s.pos_m[3 * (k % n) + 2]});
     const double e = std::hypot(s.detected_px[2 * k] - truth[0], s.detected_px[2 * k + 1] - truth[1]);
-    r.within += e < kWithinPx ? 1 : 0;
+    r.within += e < kAcceptWithinPx ? 1 : 0;
     r.misses += s.detected_valid[k] ? 0 : 1;
     r.max_shift_px = std::max(r.max_shift_px, std::hypot(truth[0] - first[0], truth[1] - first[1]));
     ++r.samples;
@@ -73,7 +73,7 @@ void ExpectRecovered(const Recovery& r) {
   ASSERT_GT(r.frames, 50u);
   EXPECT_GT(r.max_shift_px, 2.0) << "the run must move the pins for the test to mean anything";
   EXPECT_GE(static_cast<double>(r.within) / static_cast<double>(r.samples), kMinRecovered)
-      << r.within << " of " << r.samples << " samples within " << kWithinPx << " px";
+      << r.within << " of " << r.samples << " samples within " << kAcceptWithinPx << " px";
   EXPECT_LE(static_cast<double>(r.misses) / static_cast<double>(r.samples), kMaxMissShare);
 }
 

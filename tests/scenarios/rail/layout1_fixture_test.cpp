@@ -82,15 +82,15 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
     RunRecord old_run = old_file.ReadRun(k);
     ASSERT_FALSE(old_run.sensors.at(0).external_px.empty());
     // This version's held pin speed also discounts the object's motion relative to the sensor
-    // (README 'Run health'): it can only be lower, and the runs the fixture's version flagged
-    // for it (run 0: 1.59 px/frame) are healthy now. Every other figure is unchanged.
+    // (docs/model.md, 'Run health'): it can only be lower, and the runs the fixture's version
+    // flagged for it (run 0: 1.59 px/frame) are healthy now. Every other figure is unchanged.
     EXPECT_GE(old_run.attrs.at("held_pin_speed_px"), expected.attrs.at("held_pin_speed_px"));
     for (const char* key : {"held_pin_speed_px", "health_ok"}) old_run.attrs[key] = expected.attrs.at(key);
     old_run.text_attrs["health_reason"] = expected.text_attrs.at("health_reason");
     // This version dates the gross-slip onset back to the first step of the run of steps in
-    // which every contacting pin slides that brings the object into motion (README 'Ground
-    // truth'): at most one 2 ms step earlier here (run 0: 3.250 s, the fixture 3.252 s), and
-    // the frames from it on are gross slip. Nothing else changes.
+    // which every contacting pin slides that brings the object into motion (docs/model.md,
+    // 'Ground truth'): at most one 2 ms step earlier here (run 0: 3.250 s, the fixture
+    // 3.252 s), and the frames from it on are gross slip. Nothing else changes.
     const double onset = expected.attrs.at("gross_slip_onset_s"), old_onset = old_run.attrs.at("gross_slip_onset_s");
     EXPECT_LE(onset, old_onset);
     EXPECT_GE(onset, old_onset - 0.002 - 1e-9);

@@ -30,22 +30,22 @@ RailScenarioConfig Exact(double mass_kg, double mu, double speed_mm_s) {
   return c;
 }
 
-struct Case {
+struct RailCase {
   double mass_kg, mu, speed_mm_s, depth_mm, rail_friction_N;
 };
 
 // Readable parameter in test output.
-void PrintTo(const Case& k, std::ostream* os) {
+void PrintTo(const RailCase& k, std::ostream* os) {
   *os << "m=" << k.mass_kg << " kg, mu=" << k.mu << ", v=" << k.speed_mm_s << " mm/s, depth=" << k.depth_mm
       << " mm, F_rail=" << k.rail_friction_N << " N";
 }
 
 // Every rail run here must go without a MuJoCo warning (a warning also stops the run).
-class CoulombOnsetTest : public testing::MujocoWarningGuard, public ::testing::WithParamInterface<Case> {};
+class CoulombOnsetTest : public testing::MujocoWarningGuard, public ::testing::WithParamInterface<RailCase> {};
 class RailPhysicsTest : public testing::MujocoWarningGuard {};
 
 TEST_P(CoulombOnsetTest, SlipStartsWithinOneFrameOfCoulombThresholdWithoutCreep) {
-  const Case k = GetParam();
+  const RailCase k = GetParam();
   RailScenarioConfig c = Exact(k.mass_kg, k.mu, k.speed_mm_s);
   c.rail.press_depth_mm = k.depth_mm;
   c.rail.friction_N = k.rail_friction_N;
@@ -79,12 +79,12 @@ TEST_P(CoulombOnsetTest, SlipStartsWithinOneFrameOfCoulombThresholdWithoutCreep)
 }
 
 INSTANTIATE_TEST_SUITE_P(MassFrictionSpeed, CoulombOnsetTest,
-                         ::testing::Values(Case{0.10, 1.0, 0.1, 3.0, 0.0}, Case{0.05, 0.5, 1.0, 3.0, 0.0},
-                                           Case{0.20, 1.0, 1.0, 3.0, 0.0}, Case{0.10, 2.0, 3.0, 2.0, 0.0},
-                                           Case{0.30, 0.8, 0.5, 4.5, 0.0}, Case{0.10, 1.0, 0.1, 3.0, 0.005},
-                                           Case{0.20, 0.6, 0.3, 4.0, 0.02}),
-                         [](const ::testing::TestParamInfo<Case>& info) {
-                           const Case& k = info.param;
+                         ::testing::Values(RailCase{0.10, 1.0, 0.1, 3.0, 0.0}, RailCase{0.05, 0.5, 1.0, 3.0, 0.0},
+                                           RailCase{0.20, 1.0, 1.0, 3.0, 0.0}, RailCase{0.10, 2.0, 3.0, 2.0, 0.0},
+                                           RailCase{0.30, 0.8, 0.5, 4.5, 0.0}, RailCase{0.10, 1.0, 0.1, 3.0, 0.005},
+                                           RailCase{0.20, 0.6, 0.3, 4.0, 0.02}),
+                         [](const ::testing::TestParamInfo<RailCase>& info) {
+                           const RailCase& k = info.param;
                            std::string name = "m" + std::to_string(static_cast<int>(k.mass_kg * 1000)) + "g_mu" +
                                               std::to_string(static_cast<int>(k.mu * 10)) + "_v" +
                                               std::to_string(static_cast<int>(k.speed_mm_s * 10)) + "_Fr" +

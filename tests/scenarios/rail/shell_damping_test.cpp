@@ -31,7 +31,8 @@ std::vector<std::string> Prefixes(const RailScenarioConfig& cfg) {
 // sliding step); a viscous one at the same ratio. Both on the lumped shell (gel shear modulus
 // E_gel / 3, 1650 N/m), where the gel damper was characterised: on the default 10 kPa shell
 // (495 N/m, 5.4 Hz with 0.4 kg held) a 0.4 kg object held on the gel at a ratio of 0.1 still
-// rings, its fastest pin at 1.09 px/frame over the 0.5 s hold (README 'The pin-lattice skin').
+// rings, its fastest pin at 1.09 px/frame over the 0.5 s hold (docs/model.md, 'The pin-lattice
+// skin').
 RailScenarioConfig Gel(double ratio) {
   RailScenarioConfig c;
   c.skin.gel_shear_modulus_kpa = 0.0;
@@ -260,8 +261,10 @@ Spike SpikeOf(const RunRecord& rec, double onset_s, double level_px) {
 TEST(ShellDampingTest, ReleasedGelShellKeepsThePinsMovingLongerThanAViscousOne) {
   // Measured at the gel's validated step (1 ms): 6 of the 12 frames to contact loss above the
   // noise level, against 2 of 11 for the viscous shell. Not until contact is lost: at 2 ms the
-  // chattering sliding contacts had filled every frame (README 'Slip signatures').
-  // 0.57 px/frame: the level the default camera noise puts on the mean pin speed (README).
+  // chattering sliding contacts had filled every frame (docs/fingerprint-skins.md, 'Slip
+  // signatures against the hardware').
+  // 0.57 px/frame: the level the default camera noise puts on the mean pin speed
+  // (docs/viewer-and-plots.md, 'The figure gallery').
   constexpr double kNoiseLevelPx = 0.57;
   RunRecord viscous_rec, gel_rec;
   const RailRunSummary viscous =

@@ -135,7 +135,7 @@ TEST_F(SlidingContactTest, ARingingGelShellChattersAtTwiceItsValidatedStep) {
 // At the hardware's 0.1 mm/s the release itself (the window from the onset on) loses some
 // sliding contacts for a step at a 2 ms step; at 1 ms it keeps them all, and so does the
 // default, which keeps 2 ms until the onset and steps 1 ms from it on (sim.sliding_timestep_s;
-// README, "Sliding contacts").
+// docs/model.md, 'Sliding contacts').
 TEST_F(SlidingContactTest, AtTheHardwaresSpeedTheReleaseKeepsEveryContactAtOneMillisecond) {
   RailScenarioConfig c;
   c.sim.timestep_s = 0.001;

@@ -19,7 +19,7 @@ using testing::CliFolderTest;
 using testing::CliResult;
 
 // A short rail run: 20 mm lift, 2 mm/s retraction.
-constexpr const char* kShort = "--runs 1 --seed 3 --set rail.lift_mm=20 --set rail.retract_speed_mm_s=2";
+constexpr const char* kShortTwoSensorRun = "--runs 1 --seed 3 --set rail.lift_mm=20 --set rail.retract_speed_mm_s=2";
 
 class TwoSensorSceneTest : public CliFolderTest {
  protected:
@@ -38,9 +38,9 @@ class TwoSensorSceneTest : public CliFolderTest {
 
 TEST_F(TwoSensorSceneTest, TwoTacTipsSideBySideWriteTwoSensorGroupsAndHoldTheObjectTogether) {
   const std::string config = TwoSensorConfig();
-  const CliResult two = Run(std::string("generate rail ") + kShort + " --config " + config + " --out " + P("two.h5"));
+  const CliResult two = Run(std::string("generate rail ") + kShortTwoSensorRun + " --config " + config + " --out " + P("two.h5"));
   ASSERT_EQ(two.code, 0) << two.err;
-  const CliResult one = Run(std::string("generate rail ") + kShort + " --out " + P("one.h5"));
+  const CliResult one = Run(std::string("generate rail ") + kShortTwoSensorRun + " --out " + P("one.h5"));
   ASSERT_EQ(one.code, 0) << one.err;
 
   const RunRecord run = DatasetReader(P("two.h5")).ReadRun(0);

@@ -10,12 +10,11 @@
 #include "detectors/threshold.h"
 #include "scenarios/rail_catch/catch_report.h"
 #include "scenarios/rail_catch/catch_trials.h"
+#include "sim/base/nan.h"
 #include "tests/input_error.h"
 
 namespace tactip {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A record of `frames` frames at 100 fps whose object height follows `height(t)`.
 template <class F>

@@ -16,7 +16,7 @@
 namespace tactip {
 namespace {
 
-constexpr double kCreepLimitUm = 20.0;       // acceptance: creep before the onset
+constexpr double kHealthCreepLimitUm = 20.0;       // acceptance: creep before the onset
 constexpr double kQuasiStaticSpeedPx = 0.1;  // a held pin moves far less than the noise (0.5 px/frame); chatter moved 1-3
 
 TEST(RunHealthMonitorTest, CountsTransitionsSpeedAndCreepWhileHeld) {
@@ -79,16 +79,16 @@ TEST(RunHealthMonitorTest, EnergyCreatedIsJudgedAgainstTheStoredEnergy) {
   EXPECT_NE(m.Result().reason.find("health.max_energy_gain"), std::string::npos);
 }
 
-struct Scene {
+struct HealthScene {
   const char* stimulus;
   double mass_kg, depth_mm;
 };
-void PrintTo(const Scene& s, std::ostream* os) {
+void PrintTo(const HealthScene& s, std::ostream* os) {
   *os << s.stimulus << ", " << s.mass_kg << " kg, " << s.depth_mm << " mm";
 }
 
 // Deterministic, noise-free runs of the default rail scene.
-RailScenarioConfig Quiet(const Scene& s) {
+RailScenarioConfig Quiet(const HealthScene& s) {
   RailScenarioConfig c;
   c.rail.stimulus = s.stimulus;
   c.object.mass_kg = s.mass_kg;
@@ -100,7 +100,7 @@ RailScenarioConfig Quiet(const Scene& s) {
   return c;
 }
 
-class SceneHealthTest : public ::testing::TestWithParam<Scene> {};
+class SceneHealthTest : public ::testing::TestWithParam<HealthScene> {};
 
 TEST_P(SceneHealthTest, HeldObjectNeitherChattersNorCreepsNorSlipsBeforeTheOnset) {
   const RailScenario scenario(Quiet(GetParam()));
@@ -111,7 +111,7 @@ TEST_P(SceneHealthTest, HeldObjectNeitherChattersNorCreepsNorSlipsBeforeTheOnset
   EXPECT_TRUE(s.health.ok) << s.health.reason;
   EXPECT_LE(s.health.flicker_max, 2);
   EXPECT_LT(s.health.pin_speed_px, kQuasiStaticSpeedPx);
-  EXPECT_LT(s.creep_um, kCreepLimitUm);
+  EXPECT_LT(s.creep_um, kHealthCreepLimitUm);
   // No pin slips while the object is held, before the frame of the onset.
   const size_t N = static_cast<size_t>(rec.sensors[0].n_pins);
   for (size_t f = 0; f < rec.frames(); ++f) {
@@ -124,8 +124,8 @@ TEST_P(SceneHealthTest, HeldObjectNeitherChattersNorCreepsNorSlipsBeforeTheOnset
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryStimulus, SceneHealthTest,
-                         ::testing::Values(Scene{"flat", 0.05, 3.0}, Scene{"curved80", 0.4, 4.5},
-                                           Scene{"curved40", 0.2, 3.0}, Scene{"curved20", 0.1, 3.0}));
+                         ::testing::Values(HealthScene{"flat", 0.05, 3.0}, HealthScene{"curved80", 0.4, 4.5},
+                                           HealthScene{"curved40", 0.2, 3.0}, HealthScene{"curved20", 0.1, 3.0}));
 
 TEST(SceneHealthTest, TheSkinLettingGoUnderTheStillObjectIsGrossSlipFromThatStep) {
   // A small skin on the acrylic rig retracted fast (the layout-1 fixture's scene): the skin
@@ -165,7 +165,7 @@ TEST(SceneHealthTest, TheSkinLettingGoUnderTheStillObjectIsGrossSlipFromThatStep
 
 TEST(SceneHealthTest, ChatteringContactsAreFlaggedNotWrittenAsGoodData) {
   // MuJoCo's own noslip with a hard touch-down (the stability check off, or it is refused).
-  RailScenarioConfig c = Quiet(Scene{"curved40", 0.1, 3.0});
+  RailScenarioConfig c = Quiet(HealthScene{"curved40", 0.1, 3.0});
   c.sim.noslip = "mujoco";
   c.contact.impedance_min = 0.99;
   c.sim.check_stability = false;

@@ -39,10 +39,10 @@ class CliOptionsTest : public testing::CliFolderTest {
 };
 
 // Quick protocol: short lift, fast retraction.
-const std::string kQuick = " --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1";
+const std::string kQuickOptionsRun = " --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1";
 // The quick protocol with a step far beyond the stability limit and the guard off: the
 // first run blows up (exit 3).
-const std::string kBlowUp = kQuick +
+const std::string kBlowUp = kQuickOptionsRun +
                             " --set sim.check_stability=false --set sim.timestep_s=0.006"
                             " --set contact.timeconst_s=0.012";
 
@@ -56,7 +56,7 @@ TEST_F(CliOptionsTest, SeedsOutsideZeroTo2Pow64AreRefusedNotWrapped) {
     }
   }
   // The largest seed is taken as it is.
-  const CliResult g = Run("generate rail --runs 1 --quiet --seed 18446744073709551615" + kQuick + " --out " + P("s.h5"));
+  const CliResult g = Run("generate rail --runs 1 --quiet --seed 18446744073709551615" + kQuickOptionsRun + " --out " + P("s.h5"));
   ASSERT_EQ(g.code, 0) << g.err;
   EXPECT_NE(Run("info " + P("s.h5")).out.find("seed 18446744073709551615)"), std::string::npos);
 }
@@ -140,7 +140,7 @@ TEST_F(CliOptionsTest, OutputThatIsAnInputIsRefusedThroughLinksToo) {
 }
 
 TEST_F(CliOptionsTest, FolderThatTakesNoFilesIsRefusedBeforeTheRunsWithTheSystemsReason) {
-  const CliResult r = Run("generate rail --runs 1" + kQuick + " --out /proc/x.h5");
+  const CliResult r = Run("generate rail --runs 1" + kQuickOptionsRun + " --out /proc/x.h5");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.err.rfind("tactip: cannot write '/proc/x.h5': cannot create a file in folder '/proc' (", 0), 0u) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
@@ -166,7 +166,7 @@ TEST_F(CliOptionsTest, StaleTempFileOfAKilledRunIsRemovedAndNamedOnTheNextRun) {
   const std::string live = P("x.h5.tmp." + std::to_string(::getpid()) + ".0");  // a running writer's
   std::ofstream(stale) << "partial";
   std::ofstream(live) << "in progress";
-  const CliResult r = Run("generate rail --runs 1 --quiet" + kQuick + " --out " + P("x.h5"));
+  const CliResult r = Run("generate rail --runs 1 --quiet" + kQuickOptionsRun + " --out " + P("x.h5"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_FALSE(fs::exists(stale));
   EXPECT_TRUE(fs::exists(live));

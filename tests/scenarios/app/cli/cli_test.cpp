@@ -38,13 +38,9 @@ class CliTest : public testing::CliFolderTest {
 };
 
 // Quick protocol: short lift, fast retraction, two runs.
-const char* kQuick = "--runs 2 --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1";
+const char* kQuickCliRun = "--runs 2 --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1";
 
-int Lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
+using testing::LineCount;
 
 TEST_F(CliTest, ScenariosListsRail) {
   const CliResult r = Run("scenarios");
@@ -53,7 +49,7 @@ TEST_F(CliTest, ScenariosListsRail) {
 }
 
 TEST_F(CliTest, GenerateWritesDatasetAndInfoSummarisesIt) {
-  const CliResult g = Run(std::string("generate rail ") + kQuick + " --seed 7 --out " + P("a.h5"));
+  const CliResult g = Run(std::string("generate rail ") + kQuickCliRun + " --seed 7 --out " + P("a.h5"));
   ASSERT_EQ(g.code, 0) << g.err;
   EXPECT_NE(g.err.find("[2/2] run 1"), std::string::npos) << "progress lines expected: " << g.err;
   ASSERT_TRUE(fs::exists(P("a.h5")));
@@ -66,9 +62,9 @@ TEST_F(CliTest, GenerateWritesDatasetAndInfoSummarisesIt) {
 }
 
 TEST_F(CliTest, SameSeedGivesBitIdenticalDatasetWhateverTheThreadCount) {
-  ASSERT_EQ(Run(std::string("generate rail ") + kQuick + " --seed 3 --jobs 1 --quiet --out " + P("a.h5")).code, 0);
-  ASSERT_EQ(Run(std::string("generate rail ") + kQuick + " --seed 3 --jobs 2 --quiet --out " + P("b.h5")).code, 0);
-  ASSERT_EQ(Run(std::string("generate rail ") + kQuick + " --seed 4 --jobs 2 --quiet --out " + P("c.h5")).code, 0);
+  ASSERT_EQ(Run(std::string("generate rail ") + kQuickCliRun + " --seed 3 --jobs 1 --quiet --out " + P("a.h5")).code, 0);
+  ASSERT_EQ(Run(std::string("generate rail ") + kQuickCliRun + " --seed 3 --jobs 2 --quiet --out " + P("b.h5")).code, 0);
+  ASSERT_EQ(Run(std::string("generate rail ") + kQuickCliRun + " --seed 4 --jobs 2 --quiet --out " + P("c.h5")).code, 0);
   EXPECT_EQ(Slurp(P("a.h5")), Slurp(P("b.h5")));
   EXPECT_NE(Slurp(P("a.h5")), Slurp(P("c.h5")));
 }
@@ -109,7 +105,7 @@ TEST_F(CliTest, BadInputGetsOneLineAndExitCode2) {
     const bool gen = c.args.rfind("generate", 0) == 0 || c.args.rfind("bench", 0) == 0;
     const CliResult r = Run(c.args + (gen ? " --out " + P("x.h5") : std::string()));
     EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
-    EXPECT_EQ(Lines(r.err), 1) << c.args << "\n" << r.err;
+    EXPECT_EQ(LineCount(r.err), 1) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.fragment), std::string::npos) << c.args << "\n" << r.err;
     EXPECT_FALSE(fs::exists(P("x.h5"))) << c.args;
   }
@@ -119,7 +115,7 @@ TEST_F(CliTest, FailedRunLeavesNoPartialDatasetAndKeepsTheOldOne) {
   std::ofstream(P("keep.h5")) << "previous contents";
   // Timestep far beyond the stability limit, with the guard switched off: the run
   // blows up mid-way and must not leave a dataset.
-  const CliResult r = Run(std::string("generate rail ") + kQuick +
+  const CliResult r = Run(std::string("generate rail ") + kQuickCliRun +
                           " --set sim.check_stability=false --set sim.timestep_s=0.006 --set contact.timeconst_s=0.012"
                           " --out " + P("keep.h5"));
   EXPECT_EQ(r.code, 3) << r.err;
@@ -136,7 +132,7 @@ TEST_F(CliTest, FullDiskGetsOneLineExitCode2AndLeavesNoFile) {
   const CliResult r = Run("generate rail --runs 1 --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1 --quiet --out " +
                           out);
   EXPECT_EQ(r.code, 2) << r.err;  // was a crash at exit (HDF5 closing a file whose close had failed)
-  EXPECT_EQ(Lines(r.err), 1) << r.err;
+  EXPECT_EQ(LineCount(r.err), 1) << r.err;
   EXPECT_EQ(r.err.rfind("tactip: cannot write dataset '" + out + "': ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_empty(full.dir())) << "no partial or temporary file";

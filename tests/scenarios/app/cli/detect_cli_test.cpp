@@ -28,13 +28,7 @@ namespace {
 using testing::CliResult;
 using testing::Slurp;
 
-std::vector<std::string> Lines(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string line;
-  while (std::getline(ss, line)) out.push_back(line);
-  return out;
-}
+using testing::SplitLines;
 
 // One small dataset shared by all tests of the suite: 6 quick runs.
 class DetectCliTest : public ::testing::Test {
@@ -92,7 +86,7 @@ TEST_F(DetectCliTest, TrainEvaluateAndDetectEveryKind) {
     EXPECT_NE(e.out.find("confusion (frames): TP"), std::string::npos) << e.out;
     const CliResult d = Run("detect --model " + model + " --data " + P("d.h5") + " --runs 4 --out " + P("dec.csv"));
     ASSERT_EQ(d.code, 0) << kind << ": " << d.err;
-    const auto rows = Lines(Slurp(P("dec.csv")));
+    const auto rows = SplitLines(Slurp(P("dec.csv")));
     ASSERT_GT(rows.size(), 100u);
     EXPECT_EQ(rows[0], "run,frame,time_s,slip");
     EXPECT_EQ(rows[1].rfind("4,0,0,", 0), 0u) << rows[1];
@@ -150,7 +144,7 @@ TEST_F(DetectCliTest, IncipientDetectWritesSlippingCounts) {
   const CliResult d = Run("detect incipient --data " + P("d.h5") + " --window 5 --speed-thr-px 0.2 --count-thr 4 --out " +
                           P("inc.csv"));
   ASSERT_EQ(d.code, 0) << d.err;
-  const auto rows = Lines(Slurp(P("inc.csv")));
+  const auto rows = SplitLines(Slurp(P("inc.csv")));
   EXPECT_EQ(rows[0], "run,frame,time_s,slip,n_slipping");
   const auto runs = LoadDatasetRuns(P("d.h5"), {});
   size_t frames = 0;
@@ -164,7 +158,7 @@ TEST_F(DetectCliTest, ResponseStrategyAndContactMeasureOptions) {
                           " --runs 4 --response 2Fr1Sen --contact-measure --out " + P("r.csv"));
   ASSERT_EQ(d.code, 0) << d.err;
   EXPECT_NE(d.err.find("threshold+2Fr1Sen"), std::string::npos) << d.err;
-  const auto rows = Lines(Slurp(P("r.csv")));
+  const auto rows = SplitLines(Slurp(P("r.csv")));
   EXPECT_EQ(rows[0], "run,frame,time_s,slip,d_px");
   EXPECT_EQ(rows[1], "4,0,0,0,0") << "first frame: no decision, no displacement";
   const CliResult e = Run("evaluate --model " + P("r.model") + " --data " + P("d.h5") + " --runs 4-5 --response 2Fr1Sen");
@@ -183,7 +177,7 @@ TEST_F(DetectCliTest, RealTacTipCsvGoesThroughTheSameDetector) {
   WritePinCsv(P("rec.csv"), runs[0].frames);
   ASSERT_EQ(Run("detect --model " + P("t.model") + " --data " + P("rec.csv") + " --out " + P("c.csv")).code, 0);
   ASSERT_EQ(Run("detect --model " + P("t.model") + " --data " + P("d.h5") + " --runs 4 --out " + P("h.csv")).code, 0);
-  const auto c = Lines(Slurp(P("c.csv"))), h = Lines(Slurp(P("h.csv")));
+  const auto c = SplitLines(Slurp(P("c.csv"))), h = SplitLines(Slurp(P("h.csv")));
   ASSERT_EQ(c.size(), h.size());
   for (size_t i = 1; i < c.size(); ++i) {
     // Same frame, time and decision; only the run column differs (CSV input is run 0).
@@ -216,7 +210,7 @@ TEST_F(DetectCliTest, BadDetectorInputGetsOneLineAndExitCode2) {
   for (const auto& c : cases) {
     const CliResult r = Run(c.args);
     EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
-    EXPECT_EQ(Lines(r.err).size(), 1u) << c.args << "\n" << r.err;
+    EXPECT_EQ(SplitLines(r.err).size(), 1u) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.fragment), std::string::npos) << c.args << "\n" << r.err;
     EXPECT_FALSE(fs::exists(P("x.model")) || fs::exists(P("x.csv"))) << c.args;
   }
@@ -247,7 +241,7 @@ TEST_F(DetectCliTest, OutputThatIsAnInputIsRefusedBeforeAnyWork) {
   for (const auto& c : cases) {
     const CliResult r = Run(c.args);
     EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
-    EXPECT_EQ(Lines(r.err).size(), 1u) << c.args << "\n" << r.err;
+    EXPECT_EQ(SplitLines(r.err).size(), 1u) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find("the output would overwrite the input"), std::string::npos) << r.err;
   }
@@ -288,7 +282,7 @@ TEST_F(DetectCliTest, BenchOnAGivenDatasetIsReproducible) {
     EXPECT_NE(a.out.find(name), std::string::npos) << name;
   }
   // Every column but the two timing ones is identical between the two runs.
-  const auto r1 = Lines(Slurp(P("b1/bench.csv"))), r2 = Lines(Slurp(P("b2/bench.csv")));
+  const auto r1 = SplitLines(Slurp(P("b1/bench.csv"))), r2 = SplitLines(Slurp(P("b2/bench.csv")));
   ASSERT_EQ(r1.size(), 10u) << "header + 9 detectors";
   ASSERT_EQ(r1.size(), r2.size());
   auto strip_timing = [](const std::string& row) {

@@ -21,15 +21,15 @@ using testing::Slurp;
 
 namespace fs = std::filesystem;
 
-constexpr int kFrames = 60;
+constexpr int kSensorOptionFrames = 60;
 
-/// Sensor `name` of `n` pins over kFrames frames: its pins stand still, or (with
+/// Sensor `name` of `n` pins over kSensorOptionFrames frames: its pins stand still, or (with
 /// `drift_px` > 0) move by that much per frame from frame 30 on.
 SensorRecord Sensor(const std::string& name, int n, float drift_px) {
   SensorRecord s;
   s.name = name;
   s.n_pins = n;
-  for (int f = 0; f < kFrames; ++f) {
+  for (int f = 0; f < kSensorOptionFrames; ++f) {
     const float shift = f < 30 ? 0.0f : drift_px * static_cast<float>(f - 30);
     for (int i = 0; i < n; ++i) {
       s.pos_px.push_back(100.0f + 10.0f * static_cast<float>(i));
@@ -38,7 +38,7 @@ SensorRecord Sensor(const std::string& name, int n, float drift_px) {
     s.gross_slip.push_back(f >= 30 ? 1 : 0);
     s.incipient.push_back(0);
   }
-  const size_t tn = static_cast<size_t>(kFrames * n);
+  const size_t tn = static_cast<size_t>(kSensorOptionFrames * n);
   s.valid.assign(tn, 1);
   s.pos_m.assign(3 * tn, 0.01f);
   s.pin_slip.assign(tn, 0);
@@ -59,8 +59,8 @@ void WriteTwoSensorDataset(const std::string& path) {
   for (int index = 0; index < 2; ++index) {
     RunRecord r;
     r.index = index;
-    for (int f = 0; f < kFrames; ++f) r.time.push_back(0.01 * f);
-    r.object_height_m.assign(kFrames, 0.05);
+    for (int f = 0; f < kSensorOptionFrames; ++f) r.time.push_back(0.01 * f);
+    r.object_height_m.assign(kSensorOptionFrames, 0.05);
     r.sensors = {Sensor("tactip", 2, 0.0f), Sensor("left", 3, 2.0f)};
     r.sensors[1].text_attrs["skin_pattern"] = "fingerprint-v2";
     r.attrs["retract_start_s"] = 0.1;

@@ -40,16 +40,16 @@ class ShardCliTest : public testing::CliFolderTest {
 };
 
 // A short protocol (about 0.5 s per run on one core): small lift, fast retraction.
-const std::string kQuick =
+const std::string kQuickShardRun =
     " --speed-mm-s 3 --set rail.lift_mm=5 --set rail.hold_s=0.1 --set rail.settle_s=0.05 --set rail.post_fall_s=0.05"
     " --seed 5";
 
-int Lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+using testing::LineCount;
 
 TEST_F(ShardCliTest, TwoShardsMergeToTheOneMachineFileByteForByte) {
-  ASSERT_EQ(Run("generate rail --runs 4 --jobs 2 --quiet" + kQuick + " --out " + P("one.h5")).code, 0);
+  ASSERT_EQ(Run("generate rail --runs 4 --jobs 2 --quiet" + kQuickShardRun + " --out " + P("one.h5")).code, 0);
   for (const std::string i : {"0", "1"}) {
-    const CliResult r = Run("generate rail --runs 4 --shard " + i + "/2 --jobs 1 --quiet" + kQuick + " --out " +
+    const CliResult r = Run("generate rail --runs 4 --shard " + i + "/2 --jobs 1 --quiet" + kQuickShardRun + " --out " +
                             P("part" + i + ".h5"));
     ASSERT_EQ(r.code, 0) << r.err;
   }
@@ -67,13 +67,13 @@ TEST_F(ShardCliTest, TwoShardsMergeToTheOneMachineFileByteForByte) {
 }
 
 TEST_F(ShardCliTest, ThreeUnevenShardsOfFourRunsMergeToTheOneMachineFile) {
-  ASSERT_EQ(Run("generate rail --runs 4 --jobs 1 --quiet" + kQuick + " --out " + P("one.h5")).code, 0);
+  ASSERT_EQ(Run("generate rail --runs 4 --jobs 1 --quiet" + kQuickShardRun + " --out " + P("one.h5")).code, 0);
   // Runs [0,1), [1,2), [2,4): progress names each shard's runs.
   const char* expected[] = {"generating shard 0/3: rail run 0 of 4", "generating shard 1/3: rail run 1 of 4",
                             "generating shard 2/3: rail runs 2-3 of 4"};
   for (int i = 0; i < 3; ++i) {
     const std::string name = "p" + std::to_string(i) + ".h5";
-    const CliResult r = Run("generate rail --runs 4 --shard " + std::to_string(i) + "/3 --jobs 2" + kQuick + " --out " +
+    const CliResult r = Run("generate rail --runs 4 --shard " + std::to_string(i) + "/3 --jobs 2" + kQuickShardRun + " --out " +
                             P(name));
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find(expected[i]), std::string::npos) << r.err;
@@ -84,8 +84,8 @@ TEST_F(ShardCliTest, ThreeUnevenShardsOfFourRunsMergeToTheOneMachineFile) {
 }
 
 TEST_F(ShardCliTest, ShardRunsAreTheSameRunsOfTheWholeJob) {
-  ASSERT_EQ(Run("generate rail --runs 4 --jobs 2 --quiet" + kQuick + " --out " + P("one.h5")).code, 0);
-  const CliResult r = Run("generate rail --runs 4 --shard 1/2 --jobs 2" + kQuick + " --out " + P("part1.h5"));
+  ASSERT_EQ(Run("generate rail --runs 4 --jobs 2 --quiet" + kQuickShardRun + " --out " + P("one.h5")).code, 0);
+  const CliResult r = Run("generate rail --runs 4 --shard 1/2 --jobs 2" + kQuickShardRun + " --out " + P("part1.h5"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("generating shard 1/2: rail runs 2-3 of 4"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("[2/2] run 3"), std::string::npos) << r.err;
@@ -326,7 +326,7 @@ TEST_F(ShardCliTest, MergeRefusesWithOneLineNamingTheFileAndLeavesTheOutputUntou
   for (const auto& c : cases) {
     const CliResult r = Run("merge " + c.args + " --out " + kOut);
     EXPECT_EQ(r.code, 2) << c.args;
-    EXPECT_EQ(Lines(r.err), 1) << c.args << "\n" << r.err;
+    EXPECT_EQ(LineCount(r.err), 1) << c.args << "\n" << r.err;
     EXPECT_EQ(r.err.rfind("tactip: " + c.message, 0), 0u) << c.args << "\n" << r.err;
     EXPECT_EQ(Slurp(kOut), "previous contents") << c.args;
   }

@@ -22,19 +22,19 @@ namespace {
 namespace fs = std::filesystem;
 using testing::CliFolderTest;
 
-constexpr int kFrames = 5;
+constexpr int kTrackFrames = 5;
 constexpr double kStepM = 40e-6;     // tips move 40 um along y per frame (~0.5 px)
-constexpr double kWithinPx = 1.0;    // every tracked pin this close to its projected truth
+constexpr double kTrackWithinPx = 1.0;    // every tracked pin this close to its projected truth
 
 class TrackCliTest : public CliFolderTest {
  protected:
-  // Renders kFrames frames of the dome pattern moving along y into folder `name`.
+  // Renders kTrackFrames frames of the dome pattern moving along y into folder `name`.
   std::string WriteFrames(const std::string& name) {
     const std::string dir = P(name);
     fs::create_directories(dir);
     const CameraConfig camera;
     TactileImageRenderer renderer(TactileImageConfig{}, camera, 9);
-    for (int f = 0; f < kFrames; ++f) {
+    for (int f = 0; f < kTrackFrames; ++f) {
       const std::vector<float> pos_m = DomeTips(6, f * kStepM);
       cv::imwrite(dir + "/frame_" + std::to_string(100 + f) + ".png", renderer.Render(ProjectTips(camera, pos_m), pos_m));
     }
@@ -55,15 +55,15 @@ TEST_F(TrackCliTest, RenderedFramesAreTrackedIntoAPinCsvInTheSimulatorsPinOrder)
   const auto r = Run("track --images " + dir + " --out " + P("pins.csv") + " --fps 50");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::vector<PinFrame> frames = ReadPinCsv(P("pins.csv"));
-  ASSERT_EQ(frames.size(), static_cast<size_t>(kFrames));
-  for (int f = 0; f < kFrames; ++f) {
+  ASSERT_EQ(frames.size(), static_cast<size_t>(kTrackFrames));
+  for (int f = 0; f < kTrackFrames; ++f) {
     EXPECT_DOUBLE_EQ(frames[f].time_s, f / 50.0);
     const std::vector<float> truth = ProjectTips(CameraConfig{}, DomeTips(6, f * kStepM));
     ASSERT_EQ(frames[f].size(), 127);
     for (int i = 0; i < 127; ++i) {
       EXPECT_EQ(frames[f].valid[i], 1);
       EXPECT_LT(std::hypot(frames[f].pos_px(i, 0) - truth[2 * i], frames[f].pos_px(i, 1) - truth[2 * i + 1]),
-                kWithinPx)
+                kTrackWithinPx)
           << "frame " << f << " pin " << i;
     }
   }

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 // The generated dataset's config: a 5 mm lift and a 5 mm/s retraction (about 420 frames).
 const std::vector<std::string> kShortRun = {"rail.lift_mm=5", "rail.retract_speed_mm_s=5"};
 constexpr int kRuns = 2;
-constexpr std::uint64_t kSeed = 4;
+constexpr std::uint64_t kReplaySeed = 4;
 
 class ReplayViewSourceTest : public testing::MujocoWarningGuard {
  protected:
@@ -35,7 +35,7 @@ class ReplayViewSourceTest : public testing::MujocoWarningGuard {
     fs::create_directories(dir_);
     GenerateOptions opts;
     opts.runs = kRuns;
-    opts.seed = kSeed;
+    opts.seed = kReplaySeed;
     opts.jobs = 1;
     opts.out_path = Path("generated.h5");
     GenerateRailDataset(RailFamily(FindScenario("rail")).Load({"", kShortRun}), opts);

@@ -27,7 +27,7 @@ using testing::Slurp;
 class AccuracyCliTest : public testing::CliFolderTest {};
 
 // A short protocol: fast retraction, short lift.
-const std::string kQuick = " --set rail.retract_speed_mm_s=1 --set rail.lift_mm=10 --runs 1 --quiet";
+const std::string kQuickAccuracyRun = " --set rail.retract_speed_mm_s=1 --set rail.lift_mm=10 --runs 1 --quiet";
 
 std::vector<std::vector<std::string>> CsvRows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
@@ -48,7 +48,7 @@ std::vector<std::vector<std::string>> CsvRows(const std::string& text) {
 }
 
 TEST_F(AccuracyCliTest, OneRowPerSettingReferenceFirstPlotAndReproducibleNumbers) {
-  const std::string args = "accuracy rail --setting dt=1ms --setting default" + kQuick;
+  const std::string args = "accuracy rail --setting dt=1ms --setting default" + kQuickAccuracyRun;
   const CliResult r = Run(args + " --out " + (dir_ / "a").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("reference"), std::string::npos) << r.out;

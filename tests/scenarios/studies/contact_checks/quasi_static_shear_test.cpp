@@ -250,7 +250,7 @@ TEST(QuasiStaticShearTest, CentralLinksOnV2ReleaseMirrorPinsTogether) {
 // hardest where the plate drags it along the ridges: the first pins to let go lie on the sides
 // (more than 45 degrees from the plate's axis, the hardware's east/west), the first within 45
 // degrees of the axis (south/north) only at a 15 % higher load. Central links order them the
-// other way; on isotropic links the two tie (README 'Orthotropic membrane').
+// other way; on isotropic links the two tie (docs/fingerprint-skins.md, 'Orthotropic membrane').
 double AngleFromPlateAxisDeg(const PinGeometry& pin) {
   return std::atan2(std::abs(pin.normal[2]), std::abs(pin.normal[1])) * 180.0 / std::numbers::pi;
 }

@@ -24,7 +24,7 @@ using testing::RunTactip;
 using testing::Slurp;
 
 // A short protocol with contact: press, a 10 mm lift, retraction at 2 mm/s to the fall.
-const std::vector<std::string> kShort = {"rail.retract_speed_mm_s=2", "rail.lift_mm=10"};
+const std::vector<std::string> kShortLeanSets = {"rail.retract_speed_mm_s=2", "rail.lift_mm=10"};
 
 // MeasureLean replays each variant with bare mj_step, on an mjData whose warnings only
 // MuJoCo's hook sees.
@@ -45,7 +45,7 @@ TEST_F(LeanSceneTest, TheVariantsAreTheLeanSceneAndEachOmissionPutBack) {
 
 TEST_F(LeanSceneTest, MeasuresEveryVariantWithContactAndTheLeanSceneIsTheSmallest) {
   LeanOptions o;
-  o.overrides = kShort;
+  o.overrides = kShortLeanSets;
   const std::vector<LeanRow> rows = MeasureLean(ChooseLeanScenes({"rail curved20"}), o);
   ASSERT_EQ(rows.size(), LeanVariants().size());
   const LeanRow& lean = rows[0];

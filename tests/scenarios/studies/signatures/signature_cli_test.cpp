@@ -22,7 +22,7 @@ using testing::Slurp;
 namespace fs = std::filesystem;
 
 // Two short rail runs: fast retraction, short lift and hold (a few seconds in all).
-const std::string kQuickRail = "generate rail --quiet --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1";
+const std::string kQuickSignatureRail = "generate rail --quiet --speed-mm-s 2 --set rail.lift_mm=10 --set rail.hold_s=0.1";
 
 /// A test of `tactip report signatures` in its own folder.
 class SignatureCliTest : public CliFolderTest {};
@@ -31,7 +31,7 @@ class SignatureCliTest : public CliFolderTest {};
 size_t Fields(const std::string& line) { return static_cast<size_t>(std::count(line.begin(), line.end(), ',')) + 1; }
 
 TEST_F(SignatureCliTest, ReportSignaturesPrintsTheGrossSlipFiguresAndOneCsvRowPerRun) {
-  ASSERT_EQ(Run(kQuickRail + " --runs 2 --out " + P("d.h5")).code, 0);
+  ASSERT_EQ(Run(kQuickSignatureRail + " --runs 2 --out " + P("d.h5")).code, 0);
   const CliResult r = Run("report signatures " + P("d.h5") + " --csv " + P("s.csv"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("gross slip: 2 of 2 runs have an onset; noise over the 0.1 s before the retraction"),
@@ -63,7 +63,7 @@ TEST_F(SignatureCliTest, ReportSignaturesPrintsTheGrossSlipFiguresAndOneCsvRowPe
 }
 
 TEST_F(SignatureCliTest, ReportSignaturesRefusesBadInputInOneLineAndWritesNothing) {
-  ASSERT_EQ(Run(kQuickRail + " --runs 1 --out " + P("d.h5")).code, 0);
+  ASSERT_EQ(Run(kQuickSignatureRail + " --runs 1 --out " + P("d.h5")).code, 0);
   std::ofstream(P("text.h5")) << "not hdf5\n";
   const struct {
     std::string args, message;

@@ -14,6 +14,7 @@
 
 #include "scenarios/studies/incipient_report/incipient_report.h"
 #include "scenarios/studies/signatures/signature_report.h"
+#include "sim/base/nan.h"
 
 namespace tactip {
 namespace {
@@ -22,8 +23,7 @@ constexpr double kFrameS = 0.01;        // 100 fps
 constexpr double kSpeedTol = 1e-4;      // px/frame: float positions of a few hundred px
 constexpr double kTimeTol = 1e-9;       // s: times are copied, not computed
 constexpr double kNoisePx = 0.28;       // the camera's per-coordinate noise
-constexpr unsigned kSeed = 13;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr unsigned kSignatureSeed = 13;
 
 /// A run of `frames` frames of `pins` still pins on a 10 px grid, all valid and in contact,
 /// with skin `skin`; retraction at frame 40.
@@ -60,7 +60,7 @@ void MovePin(SensorRecord& s, int pin, int first, int end, double du, double dv)
 
 /// Adds the camera's Gaussian noise (fixed seed) to every position.
 void AddNoise(SensorRecord& s) {
-  std::mt19937 rng(kSeed);
+  std::mt19937 rng(kSignatureSeed);
   std::normal_distribution<float> noise(0.0f, static_cast<float>(kNoisePx));
   for (float& p : s.pos_px) p += noise(rng);
 }

@@ -24,7 +24,7 @@ using testing::CliResult;
 using testing::RunTactip;
 using testing::Slurp;
 
-RailScenarioConfig ShortRun() {
+RailScenarioConfig ShortSpeedRun() {
   RailScenarioConfig cfg;
   cfg.rail.stimulus = "curved20";
   cfg.rail.retract_speed_mm_s = 2.0;
@@ -36,7 +36,7 @@ RailScenarioConfig ShortRun() {
 class SpeedStudyTest : public testing::MujocoWarningGuard {};
 
 TEST_F(SpeedStudyTest, TimingARunChangesNeitherItsPhysicsNorItsRecord) {
-  const RailScenario scenario(ShortRun());
+  const RailScenario scenario(ShortSpeedRun());
   RunRecord plain, timed;
   RunInstrumentation inst;
   const RailRunSummary a = scenario.Run(0, 5, plain);
@@ -57,7 +57,7 @@ TEST_F(SpeedStudyTest, TimingARunChangesNeitherItsPhysicsNorItsRecord) {
 }
 
 TEST_F(SpeedStudyTest, BareReplayRunsTheSameStepsOnTheSameModel) {
-  const RailScenario scenario(ShortRun());
+  const RailScenario scenario(ShortSpeedRun());
   RunRecord rec;
   RunInstrumentation inst;
   const RailRunSummary s = scenario.RunInstrumented(0, 5, rec, inst);

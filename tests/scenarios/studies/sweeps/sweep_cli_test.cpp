@@ -29,17 +29,12 @@ class SweepCliTest : public testing::CliFolderTest {};
 constexpr const char* kMetrics[] = {"lead_gross_mean_s",    "lead_gross_std_s",     "pre_slip_fraction",
                                     "peak_speed_px",        "detector_lead_fall_s", "detector_miss_rate"};
 
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
+using testing::SplitLines;
 
 // Drops the last `n` comma-separated columns (timings) of every line.
 std::string WithoutLastColumns(const std::string& csv, int n) {
   std::string out;
-  for (std::string line : Lines(csv)) {
+  for (std::string line : SplitLines(csv)) {
     for (int k = 0; k < n; ++k) line = line.substr(0, line.rfind(','));
     out += line + "\n";
   }
@@ -59,19 +54,19 @@ TEST_F(SweepCliTest, GridGivesOneRowPerDesignPngHeatmapsAndReproducesExactly) {
   const CliResult a = Run(args + (dir_ / "a").string());
   ASSERT_EQ(a.code, 0) << a.err;
   const std::string csv = Slurp(dir_ / "a" / "designs.csv");
-  const auto rows = Lines(csv);
+  const auto rows = SplitLines(csv);
   ASSERT_EQ(rows.size(), 5u) << csv;  // header + 2 x 2 designs, first key slowest
   EXPECT_EQ(rows[0].rfind("design,skin.thickness_mm,skin.ridge_spacing_mm,n_pins,", 0), 0u) << rows[0];
   EXPECT_EQ(rows[1].rfind("0,0.5,3,127,", 0), 0u) << rows[1];
   EXPECT_EQ(rows[2].rfind("1,0.5,4,61,", 0), 0u) << rows[2];
   EXPECT_EQ(rows[4].rfind("3,1,4,61,", 0), 0u) << rows[4];
-  EXPECT_EQ(Lines(Slurp(dir_ / "a" / "runs.csv")).size(), 5u);
+  EXPECT_EQ(SplitLines(Slurp(dir_ / "a" / "runs.csv")).size(), 5u);
   // Where the slip starts: run counts per design (before the timings), the order per run.
   EXPECT_NE(rows[0].find(",shear_relaxation_s,east_west_first,south_before_north,hardware_order,sim_time_s,"
                          "wall_time_s"),
             std::string::npos)
       << rows[0];
-  EXPECT_NE(Lines(Slurp(dir_ / "a" / "runs.csv"))[0].find(",sector_order,east_west_first,south_before_north,"
+  EXPECT_NE(SplitLines(Slurp(dir_ / "a" / "runs.csv"))[0].find(",sector_order,east_west_first,south_before_north,"
                                                           "hardware_order"),
             std::string::npos);
   for (const char* m : kMetrics) {
@@ -94,7 +89,7 @@ TEST_F(SweepCliTest, NoPlotsWritesTheCsvsOnly) {
                           kValidatedStep + " --out " + (dir_ / "c").string());
   ::unsetenv("TACTIP_PYTHON");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(Lines(Slurp(dir_ / "c" / "designs.csv")).size(), 2u);
+  EXPECT_EQ(SplitLines(Slurp(dir_ / "c" / "designs.csv")).size(), 2u);
   for (const char* m : kMetrics) EXPECT_FALSE(fs::exists(dir_ / "c" / (std::string(m) + ".png"))) << m;
 }
 
