@@ -22,12 +22,12 @@ inline std::string RoundTripText(float v) {
   return std::string(buf, res.ptr);
 }
 
-/// Parses the whole of `s` as a number of type T (std::from_chars); false on anything else
-/// (empty text, a sign or space around it, trailing characters, out of range).
 /// A table's cell: `v` in the fmt format `spec`, or `missing` when `v` is NaN (not measured,
 /// did not happen).
 std::string NumberCell(double v, const char* spec = "{:.3f}", const char* missing = "-");
 
+/// Parses the whole of `s` as a number of type T (std::from_chars); false on anything else
+/// (empty text, a sign or space around it, trailing characters, out of range).
 template <typename T>
 bool ParseWhole(const std::string& s, T& out) {
   const char* end = s.data() + s.size();
