@@ -67,23 +67,4 @@ long long FrameStep(long long k, double rate_hz, double timestep_s) {
   return std::llround(static_cast<double>(k) / (rate_hz * timestep_s));
 }
 
-void DetectionNoise::Apply(std::vector<float>& px, std::vector<std::uint8_t>& valid,
-                           const std::vector<float>& prev_px) {
-  const size_t n = valid.size();
-  for (size_t i = 0; i < n; ++i) {
-    // Draw both noise values and the dropout for every pin, so the random stream does
-    // not depend on which pins were missed.
-    const double nu = rng_.Normal() * cfg_.pixel_noise_px;
-    const double nv = rng_.Normal() * cfg_.pixel_noise_px;
-    const bool missed = rng_.Uniform() < cfg_.dropout_prob;
-    px[2 * i] += static_cast<float>(nu);
-    px[2 * i + 1] += static_cast<float>(nv);
-    valid[i] = missed ? 0 : 1;
-    if (missed && !prev_px.empty()) {
-      px[2 * i] = prev_px[2 * i];
-      px[2 * i + 1] = prev_px[2 * i + 1];
-    }
-  }
-}
-
 }  // namespace tactip

@@ -1,14 +1,12 @@
 #pragma once
 // The internal camera of the TacTip: pinhole projection of the inner pin ends into the
-// image, frame timing independent of the physics step, pixel noise and missed
-// detections.
+// image, frame timing independent of the physics step, and the settings of the tracker's
+// noise and missed detections (applied by sensors/pin_noise.h).
 
 #include <array>
-#include <cstdint>
-#include <vector>
+#include <string>
 
 #include "sim/config.h"
-#include "sim/base/random.h"
 
 namespace tactip {
 
@@ -25,7 +23,14 @@ struct CameraConfig {
   double cx_px = 320.0;           ///< principal point, horizontal
   double cy_px = 240.0;           ///< principal point, vertical
   double camera_offset_mm = 25.0; ///< camera distance behind the dome centre, on the axis
-  double pixel_noise_px = 0.28;   ///< std of Gaussian noise on each pixel coordinate
+  std::string noise_model = "independent";  ///< independent or structured (sensors/pin_noise.h)
+  double pixel_noise_px = 0.28;   ///< std of the independent Gaussian noise on each pixel coordinate
+  double common_shift_px = 0.19;      ///< structured: std of the pattern's translation, per coordinate
+  double common_rotation_deg = 0.089;  ///< structured: std of the pattern's rotation
+  double common_scale_pct = 0.15;     ///< structured: std of the pattern's scale change
+  double common_time_s = 0.012;       ///< structured: correlation time of the common mode
+  double local_noise_px = 0.113;      ///< structured: std of the neighbour-correlated field, per coordinate
+  double local_length_pitch = 1.2;    ///< structured: its kernel's std, in pattern pitches
   double dropout_prob = 0.005;    ///< probability that a pin is not detected in a frame
 
   template <class V>
@@ -46,13 +51,43 @@ struct CameraConfig {
     v("camera_offset_mm", camera_offset_mm, "mm",
       "Distance of the camera's optical centre behind the dome centre along the sensor axis.",
       Bounds::Closed(1.0, 200.0));
+    v("noise_model", noise_model, "",
+      "Tracker noise on the pin positions. independent: Gaussian per pin and coordinate (pixel_noise_px), white "
+      "in time. structured: a real TacTip's structure (docs/model.md#pin-noise): the whole pattern's translation, "
+      "rotation and scale (common_*), slowly varying, plus a field correlated between neighbours (local_*), plus "
+      "the independent part (pixel_noise_px).",
+      Choices{"independent", "structured"});
     v("pixel_noise_px", pixel_noise_px, "px",
-      "Std of Gaussian noise per pixel coordinate. 0.28 px gives the hardware's ~0.5 px/frame pin-speed noise "
-      "(|difference of two noisy 2-D positions| has mean 1.77 sigma).",
+      "Std of the independent Gaussian noise per pixel coordinate. Alone (independent model), 0.28 px gives the "
+      "hardware's ~0.5 px/frame pin-speed noise (|difference of two noisy 2-D positions| has mean 1.77 sigma).",
       Bounds::Closed(0.0, 20.0));
+    VisitStructured(v);
     v("dropout_prob", dropout_prob, "",
       "Probability that a pin is missed in a frame; a missed pin keeps its previous position and valid = 0.",
       Bounds::RightOpen(0.0, 1.0));
+  }
+  /// The structured noise model's keys.
+  template <class V>
+  void VisitStructured(V& v) {
+    v("common_shift_px", common_shift_px, "px",
+      "Structured noise: std of the whole pattern's translation per coordinate, the same for every pin.",
+      Bounds::Closed(0.0, 20.0));
+    v("common_rotation_deg", common_rotation_deg, "deg",
+      "Structured noise: std of the whole pattern's rotation about the principal point.", Bounds::Closed(0.0, 10.0));
+    v("common_scale_pct", common_scale_pct, "%",
+      "Structured noise: std of the whole pattern's scale change about the principal point.",
+      Bounds::Closed(0.0, 10.0));
+    v("common_time_s", common_time_s, "s",
+      "Structured noise: correlation time of the common translation, rotation and scale (first-order "
+      "autoregressive; 0: white in time).",
+      Bounds::Closed(0.0, 100.0));
+    v("local_noise_px", local_noise_px, "px",
+      "Structured noise: std per coordinate of the per-pin field correlated between neighbours (white in time).",
+      Bounds::Closed(0.0, 20.0));
+    v("local_length_pitch", local_length_pitch, "",
+      "Structured noise: std of the neighbour field's Gaussian kernel in pattern pitches (mean nearest-neighbour "
+      "distance in the first frame); neighbours d apart correlate by about exp(-d^2 / (4 l^2)). 0: independent.",
+      Bounds::Closed(0.0, 20.0));
   }
   /// Focal lengths and principal point consistent with the image size.
   void ValidateRules() const;
@@ -126,18 +161,5 @@ class ExternalCamera {
 
 /// Frame `k` of a camera at `rate_hz` is taken at the physics step nearest to k / rate.
 long long FrameStep(long long k, double rate_hz, double timestep_s);
-
-/// Adds noise and dropouts to one frame of projected pin positions, in place.
-/// `prev_px` holds the previous reported positions (empty on the first frame).
-class DetectionNoise {
- public:
-  DetectionNoise(const CameraConfig& cfg, std::uint64_t seed) : cfg_(cfg), rng_(seed) {}
-  /// `px` (N x 2, row-major) is replaced by what the tracker reports; `valid` (N) set.
-  void Apply(std::vector<float>& px, std::vector<std::uint8_t>& valid, const std::vector<float>& prev_px);
-
- private:
-  CameraConfig cfg_;
-  Rng rng_;
-};
 
 }  // namespace tactip

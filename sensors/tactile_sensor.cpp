@@ -14,9 +14,11 @@ double Dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// The external camera's noise: the configured pixel noise, no dropouts.
+// The external camera's noise: the configured pixel noise, independent per marker, no
+// dropouts.
 CameraConfig ExternalNoise(const ExternalCameraConfig& e) {
   CameraConfig c;
+  c.noise_model = "independent";
   c.pixel_noise_px = e.pixel_noise_px;
   c.dropout_prob = 0.0;
   return c;

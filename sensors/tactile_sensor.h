@@ -14,6 +14,7 @@
 #include "sensors/camera.h"
 #include "sensors/gel_field.h"
 #include "sensors/labels.h"
+#include "sensors/pin_noise.h"
 #include "sensors/sensor_frame.h"
 #include "sim/simulation.h"
 

@@ -1,4 +1,5 @@
 #include "sensors/camera.h"
+#include "sensors/pin_noise.h"
 
 #include <gtest/gtest.h>
 
@@ -66,6 +67,7 @@ TEST(CameraTest, FramesSampleTheNearestPhysicsStep) {
 
 TEST(CameraTest, NoiseHasConfiguredSpreadAndIsSeeded) {
   CameraConfig c;
+  c.noise_model = "independent";
   c.pixel_noise_px = 0.5;
   c.dropout_prob = 0.0;
   DetectionNoise a(c, 42), b(c, 42);
@@ -83,6 +85,7 @@ TEST(CameraTest, NoiseHasConfiguredSpreadAndIsSeeded) {
 
 TEST(CameraTest, MissedPinKeepsItsPreviousPosition) {
   CameraConfig c;
+  c.noise_model = "independent";
   c.dropout_prob = 0.3;
   DetectionNoise noise(c, 7);
   const int n = 1000;

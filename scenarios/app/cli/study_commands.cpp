@@ -13,6 +13,7 @@
 #include "scenarios/studies/contact_checks/contact_checks.h"
 #include "scenarios/studies/marker_checks/marker_checks.h"
 #include "scenarios/studies/incipient_report/incipient_report.h"
+#include "scenarios/studies/noise/noise_structure.h"
 #include "scenarios/studies/signatures/signature_report.h"
 #include "scenarios/studies/tracking/tracking_report.h"
 #include "sensors/slip_data.h"
@@ -132,7 +133,25 @@ int RunSignatureReport(const StudyArgs& a, const DatasetReader& reader) {
   return 0;
 }
 
-// tactip report incipient|signatures: per-run figures of a dataset, optionally as CSV.
+// tactip report noise: the structure of the static pin noise of every run and sensor (the
+// held window, or the whole run of a recording without one) beside a real TacTip's.
+int RunNoiseReport(const StudyArgs& a, const DatasetReader& reader) {
+  const double window_s = HeldWindowS(reader.header());
+  std::vector<NoiseStructure> rows;
+  for (int idx : reader.run_indices()) {
+    const RunRecord run = reader.ReadRun(idx);
+    const NoiseWindow still = StillFrames(run, window_s);
+    for (const SensorRecord& s : run.sensors) {
+      if (!a.report_sensor.empty() && s.name != a.report_sensor) continue;
+      rows.push_back(MeasureNoiseStructure(run, s, still, idx));
+    }
+  }
+  std::printf("%s", FormatNoiseReport(rows).c_str());
+  if (!a.report_csv.empty()) WriteFileAtomic(a.report_csv, NoiseCsv(rows));
+  return 0;
+}
+
+// tactip report incipient|signatures|noise: per-run figures of a dataset, optionally as CSV.
 int RunReport(const StudyArgs& a) {
   CheckOutputsAreNotInputs({{"--csv", a.report_csv}}, {{"FILE", a.report_path}});
   if (!a.report_csv.empty()) CheckWritableLocation(a.report_csv);
@@ -140,6 +159,7 @@ int RunReport(const StudyArgs& a) {
   const DatasetReader reader(a.report_path);
   NoteFlaggedRuns(reader, a.report_path);
   if (a.report_what == "signatures") return RunSignatureReport(a, reader);
+  if (a.report_what == "noise") return RunNoiseReport(a, reader);
   std::vector<IncipientRunMetrics> metrics;
   for (int idx : reader.run_indices()) {
     const RunRecord run = reader.ReadRun(idx);
@@ -249,7 +269,7 @@ CLI::App* AddSweep(CLI::App& app, StudyArgs& a) {
   return c;
 }
 
-// Registers `tactip report incipient|signatures|tracking` and their options.
+// Registers `tactip report incipient|signatures|tracking|noise` and their options.
 CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
   auto* c = app.add_subcommand("report",
                                "Per-run figures of a dataset. incipient: ground-truth lead times, first-slipping "
@@ -257,12 +277,16 @@ CLI::App* AddReport(CLI::App& app, StudyArgs& a) {
                                "signatures: the hardware's gross- and incipient-slip signatures (spike width and "
                                "peak, co-linearity, contact loss, visibility, amplitudes, alarm lead, first-slipping "
                                "sector, marker agreement) beside the real TacTip's values, with pass/fail. tracking: "
-                               "the blob pipeline's detection error.");
+                               "the blob pipeline's detection error. noise: the structure of the static pin noise "
+                               "(common mode, similarity share, neighbour correlation, time, W = 1 and W = 5 speeds) "
+                               "beside a real TacTip's.");
   c->add_option("what", a.report_what,
                 "incipient, signatures, or tracking: the blob pipeline's pins (generate --images) against the "
-                "projected truth per run and sensor (share within 1 px, RMS and largest error, misses)")
+                "projected truth per run and sensor (share within 1 px, RMS and largest error, misses), or noise: the "
+                "static pin noise's structure in the held window (the whole run without one), every sensor unless "
+                "--sensor")
       ->required()
-      ->check(CLI::IsMember({"incipient", "signatures", "tracking"}));
+      ->check(CLI::IsMember({"incipient", "signatures", "tracking", "noise"}));
   c->add_option("file", a.report_path, "HDF5 dataset written by 'tactip generate'.")
       ->required()
       ->check(NonEmpty("an HDF5 dataset"));
