@@ -224,7 +224,9 @@ TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyAtLeastHalfASecondBefor
   // pin slips. At the validated 1 ms step it alarms at the fall, not before it
   // (docs/limitations.md, 'Known limitations'); at 2 ms its early alarms came with the
   // integration's pin jumps.
-  std::vector<int> seeds(10);
+  // Six seeds (the first three shared with the test above): each v2 run costs ~9 s of one
+  // core, and ten made this test and its neighbours wait past a minute for the shared runs.
+  std::vector<int> seeds(6);
   std::iota(seeds.begin(), seeds.end(), 1);
   int alarms = 0;
   for (const RunRecord* r : RunSeeds("fingerprint-v2", seeds)) {
@@ -236,7 +238,7 @@ TEST_F(IncipientScenarioTest, FingerprintV2SlipsPartiallyAtLeastHalfASecondBefor
     ++alarms;
     EXPECT_GE(m.detector_alarm_s, m.incipient_onset_s) << "alarm before any pin slipped";
   }
-  EXPECT_GE(alarms, 9) << "the detector sees the slip by the fall";
+  EXPECT_GE(alarms, static_cast<int>(seeds.size()) - 1) << "the detector sees the slip by the fall in all runs but one";
 }
 
 TEST_F(IncipientScenarioTest, IncipientWindowIsQuasiStaticSoASlowerRetractionLengthensIt) {
