@@ -21,7 +21,7 @@ find "$build" -name '*.gcda' -delete
 TACTIP_SKIP_LONG_EXPERIMENTS=1 ctest --test-dir "$build" -j 2 -E "$exclude" --output-on-failure || true
 
 # gcov's summary for every object: "File '/path'" then "Lines executed:P% of N".
-report=$(cd "$build" && find . -name '*.gcda' -print0 | xargs -0 -n 1 -I{} sh -c \
+report=$(cd "$build" && find . -name '*.gcda' -print0 | xargs -0 -I{} sh -c \
   'gcov -n -o "$(dirname "{}")" "{}" 2>/dev/null' | awk -v root="$root/" '
     /^File / { f = $2; gsub("\047", "", f); next }
     /^Lines executed:/ && index(f, root) == 1 {
