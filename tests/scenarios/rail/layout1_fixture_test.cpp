@@ -55,14 +55,18 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
   // The same config; this version has the gel field's keys, the gel's own shear modulus, the
   // free-sliding speed, the sliding step, the breakaway friction, the friction's slip memory, the shell's damper (and its
   // gel's loss tangent) and
-  // the skin's rim, its membrane links and its normal springs (at the values that give the fixture's physics), adds the images
+  // the skin's rim, its membrane links and its normal springs, the pin-noise model and the structured model's sizes
+  // (at the values that give the fixture's physics), adds the images
   // section (off, at its defaults) and lists the scene's sensors (the one default TacTip).
   std::string now_yaml = now.header().config_yaml;
   for (const std::string line :
        {"  marker_model: \"pins\"\n", "  gel_flow_depth_mm: 2.5\n", "  gel_squeeze_mm: 0.5\n",
         "  free_sliding_speed_mm_s: 0\n", "  sliding_timestep_s: 0\n", "  breakaway_ratio: 1\n", "  slip_memory_um: 0\n",
         "  shell_damping: \"viscous\"\n", "  gel_loss_tangent: 0.16\n", "  gel_shear_modulus_kpa: 0\n", "  rim: \"free\"\n",
-        "  membrane_links: \"isotropic\"\n", "  normal_spring: \"axial\"\n", "  ridge_rocking: \"winkler\"\n"}) {
+        "  membrane_links: \"isotropic\"\n", "  normal_spring: \"axial\"\n", "  ridge_rocking: \"winkler\"\n",
+        "  noise_model: \"independent\"\n", "  common_shift_px: 0.19\n", "  common_rotation_deg: 0.089\n",
+        "  common_scale_pct: 0.15\n", "  common_time_s: 0.012\n", "  local_noise_px: 0.113\n",
+        "  local_length_pitch: 1.2\n"}) {
     const size_t at = now_yaml.find(line);
     ASSERT_NE(at, std::string::npos) << line;
     now_yaml.erase(at, line.size());

@@ -77,7 +77,7 @@ TEST_F(SignatureCliTest, ReportSignaturesRefusesBadInputInOneLineAndWritesNothin
       {"report signatures " + P("d.h5") + " --csv " + P("d.h5"),
        "--csv '" + P("d.h5") + "' is the same file as FILE '" + P("d.h5") +
            "': the output would overwrite the input; write it to another file"},
-      {"report signature " + P("d.h5"), "what: signature not in {incipient,signatures,tracking} (see --help)"},
+      {"report signature " + P("d.h5"), "what: signature not in {incipient,signatures,tracking,noise} (see --help)"},
   };
   const auto size_before = fs::file_size(P("d.h5"));
   for (const auto& c : cases) {
