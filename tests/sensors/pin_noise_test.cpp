@@ -6,24 +6,13 @@
 #include <numbers>
 #include <vector>
 
+#include "tests/hex_pattern.h"
 namespace tactip {
 namespace {
 
 constexpr double kPitchPx = 20.0;
 
-// A hexagonal pattern of `rings` rings about the principal point (320, 240), kPitchPx apart:
-// 1 + 3 rings (rings + 1) pins (127 for 6 rings), row-major (u, v).
-std::vector<float> HexPattern(int rings) {
-  std::vector<float> px;
-  for (int q = -rings; q <= rings; ++q) {
-    for (int r = -rings; r <= rings; ++r) {
-      if (std::abs(q + r) > rings) continue;
-      px.push_back(static_cast<float>(320.0 + kPitchPx * (q + 0.5 * r)));
-      px.push_back(static_cast<float>(240.0 + kPitchPx * (std::sqrt(3.0) / 2.0) * r));
-    }
-  }
-  return px;
-}
+std::vector<float> HexPattern(int rings) { return testing::HexPattern(rings, kPitchPx); }
 
 // Only the structured parts named by the test: everything else zero, no dropouts.
 CameraConfig Structured() {

@@ -22,17 +22,17 @@ constexpr int kMinFrames = 3;
 constexpr int kMinPins = 3;
 /// Neighbour bands of the residual correlation, in pattern pitches.
 constexpr double kNeighbourPitches = 1.3, kNextPitches = 2.3;
+/// Most frame pairs the random-pair step is averaged over (a whole recording has many).
+constexpr size_t kMaxFramePairs = 20000;
 
 using Vec2 = std::array<double, 2>;
 
 /// The still frames' positions of the pins valid in all of them, each pin's straight line
 /// over the window taken out (a held skin still settles slowly; the noise is what is left):
-/// mean position per pin, the deviation from its line frame by frame, and the detrended
-/// positions (mean + deviation).
+/// mean position per pin and the deviation from its line frame by frame.
 struct Deviations {
   std::vector<Vec2> mean;               // per pin
   std::vector<std::vector<Vec2>> dev;   // [frame][pin]
-  std::vector<std::vector<Vec2>> pos;   // [frame][pin]
 };
 
 // The pins valid in every frame of the window.
@@ -67,15 +67,11 @@ Deviations CollectDeviations(const SensorRecord& s, const NoiseWindow& w) {
     }
   }
   for (size_t k = 0; k < frames; ++k) {
-    std::vector<Vec2> dev(pins.size()), pos(pins.size());
+    std::vector<Vec2> dev(pins.size());
     for (size_t p = 0; p < pins.size(); ++p) {
-      for (int c = 0; c < 2; ++c) {
-        dev[p][c] = at(k, p, c) - d.mean[p][c] - slope[p][c] * (k - k_mean);
-        pos[p][c] = d.mean[p][c] + dev[p][c];
-      }
+      for (int c = 0; c < 2; ++c) dev[p][c] = at(k, p, c) - d.mean[p][c] - slope[p][c] * (k - k_mean);
     }
     d.dev.push_back(std::move(dev));
-    d.pos.push_back(std::move(pos));
   }
   return d;
 }
@@ -184,7 +180,9 @@ void NeighbourFigures(const Deviations& d, const Fits& fits, NoiseStructure& out
 }
 
 /// How slowly the noise varies: the common mode's lag-1 autocorrelation and the mean step
-/// between consecutive frames over that between any two frames of the window.
+/// between consecutive frames over that between any two frames of the window (every pair up
+/// to kMaxFramePairs pairs, else every k-th of them). A step between detrended positions is
+/// the step between their deviations.
 void TemporalFigures(const Deviations& d, const Fits& fits, NoiseStructure& out) {
   double lag = 0.0, power = 0.0;
   for (size_t f = 0; f < fits.common.size(); ++f) {
@@ -192,20 +190,26 @@ void TemporalFigures(const Deviations& d, const Fits& fits, NoiseStructure& out)
     if (f > 0) lag += fits.common[f][0] * fits.common[f - 1][0] + fits.common[f][1] * fits.common[f - 1][1];
   }
   out.common_lag1 = power > 0.0 ? lag / power : kNaN;
+  const auto mean_step = [&](size_t f, size_t g) {
+    double sum = 0.0;
+    for (size_t k = 0; k < d.mean.size(); ++k) {
+      sum += std::hypot(d.dev[g][k][0] - d.dev[f][k][0], d.dev[g][k][1] - d.dev[f][k][1]);
+    }
+    return sum / static_cast<double>(d.mean.size());
+  };
+  const size_t frames = d.dev.size(), pairs = frames * (frames - 1) / 2;
+  const size_t stride = std::max<size_t>(1, pairs / kMaxFramePairs);
   double consecutive = 0.0, any = 0.0;
-  long n_consecutive = 0, n_any = 0;
-  for (size_t f = 0; f < d.pos.size(); ++f) {
-    for (size_t g = f + 1; g < d.pos.size(); ++g) {
-      double sum = 0.0;
-      for (size_t k = 0; k < d.mean.size(); ++k) {
-        sum += std::hypot(d.pos[g][k][0] - d.pos[f][k][0], d.pos[g][k][1] - d.pos[f][k][1]);
-      }
-      any += sum;
-      n_any += static_cast<long>(d.mean.size());
-      if (g == f + 1) consecutive += sum, n_consecutive += static_cast<long>(d.mean.size());
+  size_t n_any = 0, pair = 0;
+  for (size_t f = 0; f < frames; ++f) {
+    if (f + 1 < frames) consecutive += mean_step(f, f + 1);
+    for (size_t g = f + 1; g < frames; ++g, ++pair) {
+      if (pair % stride != 0) continue;
+      any += mean_step(f, g);
+      ++n_any;
     }
   }
-  out.consecutive_over_random = (consecutive / n_consecutive) / (any / n_any);
+  out.consecutive_over_random = (consecutive / static_cast<double>(frames - 1)) / (any / static_cast<double>(n_any));
 }
 
 /// Mean over the window's frames of the mean pin speed at W = 1 and W = 5, each over the

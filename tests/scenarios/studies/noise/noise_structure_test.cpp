@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include "tests/hex_pattern.h"
 #include "sensors/pin_noise.h"
 
 namespace tactip {
@@ -13,18 +14,7 @@ namespace {
 
 constexpr double kPitchPx = 20.0;
 
-// A hexagonal pattern of `rings` rings about (320, 240), kPitchPx apart, row-major (u, v).
-std::vector<float> HexPattern(int rings) {
-  std::vector<float> px;
-  for (int q = -rings; q <= rings; ++q) {
-    for (int r = -rings; r <= rings; ++r) {
-      if (std::abs(q + r) > rings) continue;
-      px.push_back(static_cast<float>(320.0 + kPitchPx * (q + 0.5 * r)));
-      px.push_back(static_cast<float>(240.0 + kPitchPx * (std::sqrt(3.0) / 2.0) * r));
-    }
-  }
-  return px;
-}
+std::vector<float> HexPattern(int rings) { return testing::HexPattern(rings, kPitchPx); }
 
 // A still run of `frames` frames at 100 fps: the pattern with `noise` on it, every pin valid.
 RunRecord StillRun(const CameraConfig& noise, int frames, int rings = 6) {
