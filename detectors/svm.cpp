@@ -1,4 +1,5 @@
-// SVM slip detectors: grouped-CV training with libsvm, an allocation-free dense decision
+// SVM slip detectors: grouped-CV training (the Gaussian kernel with libsvm, the linear one with
+// liblinear: detectors/linear_svm_fit.h), an allocation-free dense decision
 // function for streaming, and a text model that embeds libsvm's own model format.
 
 #include "detectors/svm.h"
@@ -14,6 +15,7 @@
 #include <utility>
 
 #include "detectors/library_fit.h"
+#include "detectors/linear_svm_fit.h"
 #include "detectors/model_text.h"
 #include "detectors/text_io.h"
 #include "sim/base/files.h"
@@ -356,6 +358,12 @@ std::unique_ptr<SvmDetector> SvmDetector::Train(const TrainingSet& ts, Kernel ke
     }
   } else {
     for (double c : opts.c_grid) grid.push_back({c, 0.0});
+    // The linear kernel: liblinear's hinge-loss solver, written as a libsvm linear model.
+    LinearSvmFit fit = FitLinearSvm(ts, grid, opts.cv_folds, opts.progress);
+    auto impl = MakeImpl(kernel, opts.features, fit.report.best_c, 0.0, std::move(fit.standardizer),
+                         std::move(fit.libsvm_text), "(trained svm-linear)", 0);
+    impl->cv = fit.report;
+    return std::unique_ptr<SvmDetector>(new SvmDetector(std::move(impl)));
   }
   SilenceLibsvm();
 

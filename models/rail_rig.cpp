@@ -24,6 +24,14 @@ double RailConfig::StimulusRadiusM() const {
   return 0.0;
 }
 
+void RailConfig::ValidateRules() const {
+  if (retract_speed_max_mm_s != 0.0 && retract_speed_max_mm_s < retract_speed_mm_s) {
+    FailRule("rail.retract_speed_max_mm_s", retract_speed_max_mm_s,
+             fmt::format("must be 0 (one speed) or at least rail.retract_speed_mm_s = {} mm/s",
+                         config_detail::FormatReal(retract_speed_mm_s)));
+  }
+}
+
 double ArmConfig::Omega(double moving_mass_kg) const { return std::sqrt(kp_N_m / moving_mass_kg); }
 
 double SensorCentreX(const SkinConfig& skin, double gap_m) { return -skin.OuterRadiusMm() * 1e-3 - gap_m; }

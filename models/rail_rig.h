@@ -42,6 +42,7 @@ struct RailConfig {
   double settle_s = 0.2;               ///< pause before pressing and after the press
   double hold_s = 0.5;                 ///< pause after the lift, before retraction
   double retract_speed_mm_s = 0.1;     ///< retraction speed along the normal
+  double retract_speed_max_mm_s = 0.0; ///< > 0: each run's speed drawn from [retract_speed_mm_s, this]
   double post_fall_s = 0.3;            ///< simulated time kept after the object falls
 
   template <class V>
@@ -76,9 +77,15 @@ struct RailConfig {
     v("retract_speed_mm_s", retract_speed_mm_s, "mm/s",
       "Retraction speed along the stimulus normal (protocol: 0.1 mm/s offline; 1-20 mm/s online).",
       Bounds::LeftOpen(0.0, 100.0));
+    v("retract_speed_max_mm_s", retract_speed_max_mm_s, "mm/s",
+      "0: every run retracts at retract_speed_mm_s. Above it: each run draws its speed uniformly from "
+      "retract_speed_mm_s to this (the benchmark's mixed set: 0.1 to 5 mm/s); the run's attribute "
+      "retract_speed_mm_s holds the drawn speed.",
+      Bounds::Closed(0.0, 100.0));
     v("post_fall_s", post_fall_s, "s", "Simulated time kept after the object falls.", Bounds::Closed(0.0, 5.0));
   }
-  void ValidateRules() const {}
+  /// retract_speed_max_mm_s is 0 or at least retract_speed_mm_s.
+  void ValidateRules() const;
   /// Radius of curvature of the stimulus in metres (0 = flat).
   double StimulusRadiusM() const;
 };

@@ -19,7 +19,8 @@ double Dist2(const cv::Point2f& a, const cv::Point2f& b) {
   return du * du + dv * dv;
 }
 
-/// Median over the blobs of the distance to the nearest other blob (px); 0 for < 2 blobs.
+}  // namespace
+
 double MedianNearestDistance(const std::vector<cv::Point2f>& blobs) {
   if (blobs.size() < 2) return 0.0;
   std::vector<double> nearest;
@@ -33,8 +34,6 @@ double MedianNearestDistance(const std::vector<cv::Point2f>& blobs) {
   std::nth_element(nearest.begin(), nearest.begin() + static_cast<long>(nearest.size() / 2), nearest.end());
   return nearest[nearest.size() / 2];
 }
-
-}  // namespace
 
 BlobDetector::BlobDetector(const TactileImageConfig& cfg) {
   // Bright blobs over a range of thresholds; a blob must repeat at two of them.

@@ -48,6 +48,9 @@ class PinTracker {
   double gate_px_;
 };
 
+/// Median over the blobs of the distance to the nearest other blob (px); 0 for < 2 blobs.
+double MedianNearestDistance(const std::vector<cv::Point2f>& blobs);
+
 /// The blobs of a first real frame in the documented pin order: rings outwards from the
 /// blobs' centroid (a new ring where the radius jumps by more than half the median
 /// nearest-neighbour distance), each ring by azimuth from image +u towards image -v

@@ -18,13 +18,13 @@ struct CameraConfig {
   double frame_rate_hz = 100.0;   ///< frames per second
   int width_px = 640;             ///< image width
   int height_px = 480;            ///< image height
-  double fx_px = 580.0;           ///< focal length in pixels, horizontal
-  double fy_px = 580.0;           ///< focal length in pixels, vertical
+  double fx_px = 377.0;           ///< focal length in pixels, horizontal (outer ring at 131 px)
+  double fy_px = 377.0;           ///< focal length in pixels, vertical
   double cx_px = 320.0;           ///< principal point, horizontal
   double cy_px = 240.0;           ///< principal point, vertical
   double camera_offset_mm = 25.0; ///< camera distance behind the dome centre, on the axis
-  std::string noise_model = "independent";  ///< independent or structured (sensors/pin_noise.h)
-  double pixel_noise_px = 0.28;   ///< std of the independent Gaussian noise on each pixel coordinate
+  std::string noise_model = "structured";  ///< independent or structured (sensors/pin_noise.h)
+  double pixel_noise_px = 0.139;  ///< std of the independent Gaussian noise on each pixel coordinate
   double common_shift_px = 0.19;      ///< structured: std of the pattern's translation, per coordinate
   double common_rotation_deg = 0.089;  ///< structured: std of the pattern's rotation
   double common_scale_pct = 0.15;     ///< structured: std of the pattern's scale change
@@ -41,8 +41,9 @@ struct CameraConfig {
     v("width_px", width_px, "px", "Image width.", Bounds::Closed(16, 8192));
     v("height_px", height_px, "px", "Image height.", Bounds::Closed(16, 8192));
     v("fx_px", fx_px, "px",
-      "Horizontal focal length (580 px puts the outer ring ~220 px from the centre); 0.1 to 20 x width_px (a "
-      "field of view of 157 to 2.9 degrees).",
+      "Horizontal focal length. 377 px puts the outer ring 131 px from the centre, as on the real 127-pin TacTip's "
+      "640x480 camera (a ~2.1 mm lens on a 1/4-inch sensor, 81 degrees across; docs/model.md#the-camera); 0.1 to 20 "
+      "x width_px (a field of view of 157 to 2.9 degrees).",
       Bounds::Closed(kMinFocalPerPx * 16, kMaxFocalPerPx * 8192));
     v("fy_px", fy_px, "px", "Vertical focal length; 0.1 to 20 x height_px.",
       Bounds::Closed(kMinFocalPerPx * 16, kMaxFocalPerPx * 8192));
@@ -58,8 +59,9 @@ struct CameraConfig {
       "the independent part (pixel_noise_px).",
       Choices{"independent", "structured"});
     v("pixel_noise_px", pixel_noise_px, "px",
-      "Std of the independent Gaussian noise per pixel coordinate. Alone (independent model), 0.28 px gives the "
-      "hardware's ~0.5 px/frame pin-speed noise (|difference of two noisy 2-D positions| has mean 1.77 sigma).",
+      "Std of the independent Gaussian noise per pixel coordinate. With the structured model's defaults, 0.139 px "
+      "gives the hardware's 0.5 px/frame pin-speed noise; alone (independent model) 0.28 px does (|difference of two "
+      "noisy 2-D positions| has mean 1.77 sigma; the legacy camera preset).",
       Bounds::Closed(0.0, 20.0));
     VisitStructured(v);
     v("dropout_prob", dropout_prob, "",

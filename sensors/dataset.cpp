@@ -113,7 +113,7 @@ const SensorRecord* RunRecord::FindSensor(const std::string& name) const {
 bool IsEventAttribute(const std::string& key) {
   static const char* const kEvents[] = {"gross_slip_onset_s", "incipient_onset_s", "incipient_lead_s",
                                         "object_fall_s",      "retract_start_s",   "predicted_onset_s",
-                                        "coulomb_early_s"};
+                                        "coulomb_early_s",    "marker_onset_s"};
   return std::any_of(std::begin(kEvents), std::end(kEvents), [&](const char* e) { return key == e; });
 }
 

@@ -66,34 +66,38 @@ std::vector<std::string> PngFramesIn(const std::string& dir, const std::string& 
   return files;
 }
 
-std::vector<PinFrame> TrackPngFrames(const std::vector<std::string>& files, double fps_hz,
-                                     const TactileImageConfig& cfg) {
-  const BlobDetector detector(cfg);
-  std::vector<PinFrame> frames;
+TrackedRecording TrackPngFrames(const std::vector<std::string>& files, const TrackSettings& settings) {
+  TrackedRecording out;
   cv::Size size;
   std::optional<PinTracker> tracker;
   for (size_t k = 0; k < files.size(); ++k) {
     const cv::Mat grey = ReadGreyFrame(files[k]);
-    // Every frame the first frame's size.
-    if (k == 0) size = grey.size();
+    // Every frame the first frame's size; the settings from the first frame.
+    if (k == 0) {
+      size = grey.size();
+      out.params = ChooseFrameBlobParams(grey, files[k].c_str());
+      if (settings.min_area_px) out.params.min_area_px = *settings.min_area_px;
+      if (settings.gate_px) out.params.gate_px = *settings.gate_px;
+    }
     if (grey.size() != size) {
       throw InputError(fmt::format("'{}' is {} x {} px, but the first frame '{}' is {} x {} px", files[k], grey.cols,
                                    grey.rows, files[0], size.width, size.height));
     }
-    const std::vector<cv::Point2f> blobs = detector.Detect(grey);
-    // The pins: the first frame's blobs in the documented order, then tracked.
+    const std::vector<cv::Point2f> blobs = FrameBlobs(grey, out.params);
+    // The pins: the first frame's markers in the documented order, then tracked.
     if (!tracker) {
       if (blobs.empty()) {
-        throw InputError(fmt::format("'{}' (the first frame) shows no blobs: white markers on a dark skin are "
-                                     "expected",
-                                     files[k]));
+        throw InputError(fmt::format("'{}' (the first frame) shows no markers of at least {} px", files[k],
+                                     out.params.min_area_px));
       }
-      tracker.emplace(NumberPins(blobs), cfg.gate_px);
+      tracker.emplace(NumberPins(blobs), out.params.gate_px);
     }
     tracker->Update(blobs);
-    frames.push_back(FrameOf(*tracker, static_cast<double>(k) / fps_hz));
+    out.frames.push_back(FrameOf(*tracker, static_cast<double>(k) / settings.fps_hz));
+    out.found.push_back(static_cast<int>(std::count(tracker->valid().begin(), tracker->valid().end(), 1)));
+    out.blobs.push_back(static_cast<int>(blobs.size()));
   }
-  return frames;
+  return out;
 }
 
 }  // namespace tactip

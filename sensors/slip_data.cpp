@@ -99,8 +99,15 @@ PinSource ParsePinSource(const std::string& text) {
   throw InputError("--pins '" + text + "': must be camera or detected");
 }
 
+OnsetLabels ParseOnsetLabels(const std::string& text) {
+  if (text == "exact") return OnsetLabels::kExact;
+  if (text == "marker") return OnsetLabels::kMarker;
+  throw InputError("--labels '" + text + "': must be exact or marker");
+}
+
 std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
-                                        bool score_onset_frame, const std::string& sensor, PinSource pins) {
+                                        bool score_onset_frame, const std::string& sensor, PinSource pins,
+                                        OnsetLabels labels) {
   const DatasetReader reader(path);
   std::vector<int> wanted = runs.empty() ? reader.run_indices() : runs;
   for (int idx : wanted) {
@@ -119,12 +126,18 @@ std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vect
     const size_t T = rec.frames();
     if (T >= 2) run.frame_rate_hz = (T - 1) / (rec.time.back() - rec.time.front());
     run.frames = SensorFrames(rec, ChooseSensor(rec, sensor, path), path, pins);
-    // Ground truth: labelled window from the retraction, onset from the exact onset time.
+    // Ground truth: labelled window from the retraction, onset from the chosen onset time.
     auto attr = [&](const char* k) {
       auto it = rec.attrs.find(k);
       return it == rec.attrs.end() ? std::nan("") : it->second;
     };
-    const double retract = attr("retract_start_s"), onset = attr("gross_slip_onset_s");
+    const char* onset_key = labels == OnsetLabels::kMarker ? "marker_onset_s" : "gross_slip_onset_s";
+    if (labels == OnsetLabels::kMarker && rec.attrs.count(onset_key) == 0) {
+      throw InputError(fmt::format("--labels marker: dataset '{}' run {} has no hardware-style onset "
+                                   "(events/marker_onset_s; datasets made before it was recorded have only the exact one)",
+                                   path, idx));
+    }
+    const double retract = attr("retract_start_s"), onset = attr(onset_key);
     run.first_frame = 0;
     if (!std::isnan(retract)) {
       while (run.first_frame < static_cast<int>(T) && rec.time[run.first_frame] < retract) ++run.first_frame;

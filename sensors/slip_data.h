@@ -36,17 +36,28 @@ enum class PinSource {
 /// "camera" or "detected" as a PinSource; throws InputError naming --pins otherwise.
 PinSource ParsePinSource(const std::string& text);
 
+/// Which onset labels a run's frames.
+enum class OnsetLabels {
+  kExact,   ///< the simulator's exact gross-slip onset (events/gross_slip_onset_s)
+  kMarker,  ///< the hardware-style onset of a marker camera on the object (events/marker_onset_s)
+};
+
+/// "exact" or "marker" as OnsetLabels; throws InputError naming --labels otherwise.
+OnsetLabels ParseOnsetLabels(const std::string& text);
+
 /// Reads runs of an HDF5 dataset as labelled frame sequences, as sensor `sensor` ("" =
 /// the dataset's first) recorded them, with the pin positions of `pins` (kDetected throws
 /// InputError naming the run and sensor when the dataset has no detected pins). `runs` empty = all runs. The labelled window
 /// starts at the run's retraction; the onset frame is the first frame at or after
 /// `gross_slip_onset_s`. That frame's velocity spans the onset (part static, part slip),
 /// so unless `score_onset_frame` is set it is a transition frame and the slip frames start
-/// at the next one. Throws InputError for a missing/corrupt file, a run that is not in
-/// the dataset or a sensor it does not have.
+/// at the next one. `labels` picks the onset: the exact one or the marker camera's. Throws
+/// InputError for a missing/corrupt file, a run that is not in the dataset, a sensor it does
+/// not have, or marker labels in a dataset made before they were recorded.
 std::vector<LabeledRun> LoadDatasetRuns(const std::string& path, const std::vector<int>& runs,
                                         bool score_onset_frame = false, const std::string& sensor = "",
-                                        PinSource pins = PinSource::kCamera);
+                                        PinSource pins = PinSource::kCamera,
+                                        OnsetLabels labels = OnsetLabels::kExact);
 
 /// Reads pin frames from the project's HDF5 datasets (of sensor `sensor`, "" = the first)
 /// or from a real-TacTip CSV recording (by extension: .h5/.hdf5 or .csv). CSV input is

@@ -156,6 +156,7 @@ void RailScenarioConfig::ValidateRules() const {
   sensor.ValidateRules();
   external.ValidateIntrinsics(sensor);
   images.ValidateRules();
+  rail.ValidateRules();
   if (contact.timeconst_s < 2.0 * sim.timestep_s) {
     FailRule("contact.timeconst_s", contact.timeconst_s,
              fmt::format("must be >= 2 * sim.timestep_s = {} s (MuJoCo would silently soften it)",

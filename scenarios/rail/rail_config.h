@@ -9,6 +9,7 @@
 #include "scenarios/scene/run_health.h"
 #include "sensors/camera.h"
 #include "sensors/labels.h"
+#include "sensors/marker_labels.h"
 #include "sensors/tactile_image.h"
 #include "sim/sim_config.h"
 
@@ -25,6 +26,7 @@ struct RailScenarioConfig {
   CameraConfig sensor;
   ExternalCameraConfig external;
   LabelConfig labels;
+  MarkerCameraConfig marker_camera;
   HealthConfig health;
   TactileImageConfig images;
   std::vector<SensorMountConfig> sensors{SensorMountConfig{}};  ///< the TacTips on the arm (one by default)
@@ -40,6 +42,7 @@ struct RailScenarioConfig {
     v.Section("sensor", sensor);
     v.Section("external", external);
     v.Section("labels", labels);
+    v.Section("marker_camera", marker_camera);
     v.Section("health", health);
     v.Section("images", images);
     v.List("sensors", sensors);

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "sensors/marker_labels.h"
 #include "sim/base/random.h"
 
 namespace tactip {
@@ -9,6 +10,8 @@ namespace tactip {
 namespace {
 
 constexpr double kGravity = 9.81;  // m/s^2, the rail scene's
+// The marker camera's random stream: its own, so the tactile noise does not depend on it.
+constexpr std::uint64_t kMarkerStream = 0x6D61726B65724F6EULL;
 
 // A TacTip's cameras, noise and labelling, its ridge-rocking marker shift and its gel field.
 TactileSensorSpec SensorSpec(const RailScenarioConfig& cfg, const std::string& name) {
@@ -69,6 +72,12 @@ RailRun::Draws RailRun::Draw(const RailScenarioConfig& c, std::uint64_t run_seed
   d.run_seed = run_seed;
   d.depth_m = (c.rail.press_depth_mm + vary.Uniform(-1.0, 1.0) * c.rail.press_depth_jitter_mm) * 1e-3;
   d.mu = c.contact.friction * (1.0 + vary.Uniform(-1.0, 1.0) * c.contact.friction_jitter);
+  // The retraction speed on a stream of its own (runs of one fixed speed draw nothing).
+  d.retract_speed_mm_s = c.rail.retract_speed_mm_s;
+  if (c.rail.retract_speed_max_mm_s > c.rail.retract_speed_mm_s) {
+    Rng speed(DeriveSeed(run_seed, 1));
+    d.retract_speed_mm_s = speed.Uniform(c.rail.retract_speed_mm_s, c.rail.retract_speed_max_mm_s);
+  }
   return d;
 }
 
@@ -82,7 +91,7 @@ RailRun::RailRun(const RailScenarioConfig& cfg, const RailScene& scene, int inde
 
 RailRun::RailRun(const RailScenarioConfig& cfg, const RailScene& scene, int index, const Draws& d,
                  const ControllerFactory& make, RailController* controller)
-    : c_(cfg), draws_(d), sched_(cfg.rail, d.depth_m), schedule_controller_(sched_), controller_(controller) {
+    : c_(cfg), draws_(d), sched_(cfg.rail, d.depth_m, d.retract_speed_mm_s), schedule_controller_(sched_), controller_(controller) {
   // The controller: the caller's, the factory's for this run, or the offline schedule.
   if (controller_ == nullptr && make) {
     owned_ = make(index, sched_);
@@ -121,9 +130,13 @@ RailRunSummary RailRun::Finish(RunRecord& rec) {
   s.press_depth_mm = draws_.depth_m * 1e3;
   s.friction = draws_.mu;
   s.retract_start_s = sched_.retract_start;
-  rec.attrs["retract_speed_mm_s"] = c_.rail.retract_speed_mm_s;
+  rec.attrs["retract_speed_mm_s"] = draws_.retract_speed_mm_s;
   rec.attrs["press_depth_mm"] = s.press_depth_mm;
   rec.attrs["retract_start_s"] = s.retract_start_s;
+  // The hardware-style onset: a marker on the object tracked from the end of the hold.
+  rec.attrs["marker_onset_s"] =
+      MarkerOnset(rec.time, rec.object_height_m, HoldSpan{sched_.lift_end, sched_.retract_start}, c_.marker_camera,
+                  draws_.run_seed ^ kMarkerStream);
   rec.attrs["rail_friction_N"] = c_.rail.friction_N;
   rec.text_attrs["stimulus"] = c_.rail.stimulus;
   return s;

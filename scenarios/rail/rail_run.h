@@ -65,6 +65,7 @@ class RailRun {
   struct Draws {
     std::uint64_t run_seed;
     double depth_m, mu;
+    double retract_speed_mm_s;  ///< this run's retraction speed
   };
   static Draws Draw(const RailScenarioConfig& cfg, std::uint64_t run_seed);
   RailRun(const RailScenarioConfig& cfg, const RailScene& scene, int index, const Draws& draws,

@@ -19,11 +19,12 @@ struct RailSchedule {
   double press_start, press_end, lift_start, lift_end, retract_start, give_up;
   double press_dist, lift_dist, retract_speed;
 
-  /// The timeline for a press of `depth_m` under the protocol settings `r`.
-  RailSchedule(const RailConfig& r, double depth_m) {
+  /// The timeline for a press of `depth_m` and a retraction at `retract_speed_mm_s` under the
+  /// protocol settings `r`.
+  RailSchedule(const RailConfig& r, double depth_m, double retract_speed_mm_s) {
     press_dist = r.approach_gap_mm * 1e-3 + depth_m;
     lift_dist = r.lift_mm * 1e-3;
-    retract_speed = r.retract_speed_mm_s * 1e-3;
+    retract_speed = retract_speed_mm_s * 1e-3;
     press_start = r.settle_s;
     press_end = press_start + press_dist / (r.press_speed_mm_s * 1e-3);
     lift_start = press_end + r.settle_s;

@@ -94,7 +94,7 @@ std::vector<CatchTrial> RunCatchTrials(const RailScenarioConfig& cfg, const Catc
                 const auto us = s.controller_figures.find("classify_us");
                 CatchTrial t = ScoreCatchTrial(s, rec, us == s.controller_figures.end() ? 0.0 : us->second);
                 t.stimulus = c.rail.stimulus;
-                t.speed_mm_s = c.rail.retract_speed_mm_s;
+                t.speed_mm_s = rec.attrs.at("retract_speed_mm_s");  // this trial's (drawn when a range is set)
                 if (opts.progress) opts.progress(t);
                 trials.push_back(t);
               },

@@ -280,6 +280,8 @@ TEST(SvmDetectorTest, LinearReachesHighF1OnHeldOutRuns) {
   EXPECT_GE(HeldOutF1(*det, TestRuns(), Options().n_slip), kMinF1);
   EXPECT_EQ(det->cv_report().grid.size(), Options().c_grid.size());
   EXPECT_EQ(det->gamma(), 0.0);
+  // liblinear's weight vector, stored as libsvm's one support vector with coefficient 1.
+  EXPECT_EQ(det->n_support_vectors(), 1);
 }
 
 TEST(LogRegDetectorTest, ReachesHighF1OnHeldOutRuns) {

@@ -109,6 +109,7 @@ TEST(PinCsvTest, MalformedFilesGiveOneLineMessagesWithFileAndLine) {
       {h + "x,0.00,0,1,1\n", "line 2: frame 'x' is not an integer"},
       {h + "0,0.00,0,nan,1\n", "line 2: x_px 'nan' is not finite"},
       {h + "0,inf,0,1,1\n", "line 2: time_s 'inf' is not finite"},
+      {h + "0,nan,0,1,1\n", "line 2: time_s 'nan' is not finite"},
       {h + "0,0.00,0,1\n", "line 2: expected 5 fields, got 4"},
       {h + ok2 + "1,0.01,0,1,1\n2,0.02,0,1,1\n", "line 4: frame 1 has 1 pins, frame 0 has 2"},
       {h + ok2 + "1,0.01,0,1,1\n1,0.01,0,1,1\n", "line 5: duplicate pin 0 in frame 1"},

@@ -1,6 +1,7 @@
 // Behaviour kept: a fixed set of runs — the rail on the flat and curved40 stimuli at two
 // speeds, two sensors side by side, rendered images, the incipient scene with each skin, a
-// rail-catch and an incipient-stop trial — is simulated again and every array, label, event,
+// rail-catch and an incipient-stop trial, each with the legacy camera, and runs with the
+// default and the pose-dataset cameras — is simulated again and every array, label, event,
 // attribute and controller action must equal, bit for bit, what the code produced when the
 // digests in assets/fixtures/behaviour_digests.txt were recorded. A change that is meant to
 // move a figure records them anew (TACTIP_WRITE_DIGESTS=1) and says why in its commit.
@@ -28,6 +29,7 @@
 #include "scenarios/rail/rail.h"
 #include "scenarios/rail_catch/catch_controller.h"
 #include "scenarios/registry.h"
+#include "sensors/camera_presets.h"
 #include "sim/config.h"
 #include "tests/temp_dir.h"
 
@@ -97,6 +99,10 @@ struct DigestCase {
   std::string skin;                    // preset, or empty: the scenario's
   std::vector<std::string> overrides;  // --set, in order
   Loop loop = Loop::kOffline;
+  // --camera preset. The cases recorded before the real-camera calibration keep the camera
+  // they were recorded with (legacy: f = 580 px, independent noise); the *-tactip-camera and
+  // *-pose-camera cases run the default camera and the pose-dataset crop.
+  std::string camera = "legacy";
 };
 
 // gtest prints a case by its name.
@@ -118,6 +124,14 @@ const std::vector<DigestCase>& Cases() {
       {"incipient-fingerprint-v2", "incipient", "fingerprint-v2", {"rail.lift_mm=10", "rail.retract_speed_mm_s=1"}},
       {"rail-catch-threshold", "rail", "", {"rail.lift_mm=10", "rail.retract_speed_mm_s=1"}, Loop::kCatch},
       {"incipient-stop-v2", "incipient", "fingerprint-v2", {"rail.lift_mm=10", "rail.retract_speed_mm_s=1"}, Loop::kStop},
+      {"rail-flat-1mm_s-tactip-camera", "rail", "", {"rail.lift_mm=10", "rail.retract_speed_mm_s=1"}, Loop::kOffline,
+       "tactip-640x480"},
+      {"rail-images-tactip-camera", "rail", "", {"rail.lift_mm=10", "rail.retract_speed_mm_s=5", "images.enabled=true"},
+       Loop::kOffline, "tactip-640x480"},
+      {"rail-images-pose-camera", "rail", "", {"rail.lift_mm=10", "rail.retract_speed_mm_s=5", "images.enabled=true"},
+       Loop::kOffline, "pose-dataset-256"},
+      {"incipient-stop-v2-tactip-camera", "incipient", "fingerprint-v2",
+       {"rail.lift_mm=10", "rail.retract_speed_mm_s=1"}, Loop::kStop, "tactip-640x480"},
   };
   return cases;
 }
@@ -125,10 +139,12 @@ const std::vector<DigestCase>& Cases() {
 constexpr std::uint64_t kDigestSeed = 11;
 constexpr double kCatchThresholdPx = 0.3;
 
-// The case's config, as `tactip generate SCENARIO --skin SKIN --set ...` resolves it.
+// The case's config, as `tactip generate SCENARIO --skin SKIN --camera CAMERA --set ...`
+// resolves it.
 RailScenarioConfig CaseConfig(const DigestCase& c) {
   ConfigSource src;
   if (!c.skin.empty()) src.overrides = SkinPresetOverrides(c.skin);
+  for (const std::string& o : CameraPreset(c.camera)) src.overrides.push_back(o);
   for (const std::string& o : c.overrides) src.overrides.push_back(o);
   return RailFamily(FindScenario(c.scenario)).Load(src);
 }

@@ -73,6 +73,7 @@ Sag SagForOneSecond(const HangingSkin& h) {
   sim.Forward();
   TactileSensorSpec spec;
   spec.camera.pixel_noise_px = 0.0;
+  spec.camera.noise_model = "independent";
   spec.camera.dropout_prob = 0.0;
   spec.gel_field = GelField::Build(h.skin, h.lattice);
   const int n = static_cast<int>(h.lattice.size());

@@ -82,7 +82,7 @@ TEST(TactileImageTest, RenderRefusesPositionsAndTipsOfDifferentCounts) {
 TEST(TactileImageTest, TipsCutByTheBorderAreNotInTheImage) {
   const CameraConfig camera;
   EXPECT_TRUE(TipInImage(camera, 0.5, {0.018, 0.0, 0.0}));
-  EXPECT_FALSE(TipInImage(camera, 0.5, {0.0, 0.0, 0.0105}));  // v ~ -3 px: above the image
+  EXPECT_FALSE(TipInImage(camera, 0.5, {0.0, 0.0, 0.0157}));  // v ~ 3 px: its 7.5 px disc crosses the top edge
   EXPECT_FALSE(TipInImage(camera, 0.5, {-0.03, 0.0, 0.0}));   // behind the camera
 }
 

@@ -4,8 +4,11 @@
 
 #include <cmath>
 
+#include "models/pin_lattice.h"
 #include "models/rail_rig.h"
+#include "sensors/camera_presets.h"
 #include "sensors/friction_law.h"
+#include "sim/config.h"
 
 namespace tactip {
 namespace {
@@ -32,6 +35,7 @@ struct RailModel {
 TactileSensorSpec NoiseFree() {
   TactileSensorSpec spec;
   spec.camera.pixel_noise_px = 0.0;
+  spec.camera.noise_model = "independent";
   spec.camera.dropout_prob = 0.0;
   return spec;
 }
@@ -198,6 +202,91 @@ TEST(FrictionLawTest, PerPinSpreadStaysInItsBandAndTheStimulusBelowEveryKineticV
   EXPECT_LE(hi, 1.2);
   EXPECT_GT(hi - lo, 0.1);  // 127 draws spread over the band
   EXPECT_NEAR(rail.model.GeomFriction(rail.model.GeomId(RailNames::kStimulus)), 0.48, 1e-12);
+}
+
+}  // namespace
+}  // namespace tactip
+
+namespace tactip {
+namespace {
+
+// The camera of preset `name`: its sensor.* keys applied to the defaults.
+CameraConfig PresetKeys(const std::string& name) {
+  const std::string prefix = "sensor.";
+  std::vector<std::string> keys;
+  for (const std::string& k : CameraPreset(name)) {
+    if (k.rfind(prefix, 0) == 0) keys.push_back(k.substr(prefix.size()));
+  }
+  return LoadConfig<CameraConfig>("", keys);
+}
+
+// The same with the noise off.
+CameraConfig PresetCamera(const std::string& name) {
+  CameraConfig c = PresetKeys(name);
+  c.noise_model = "independent";
+  c.pixel_noise_px = 0.0;
+  c.dropout_prob = 0.0;
+  return c;
+}
+
+// Mean image distance of the outermost ring's pins from the principal point, at rest.
+double OuterRingRadiusPx(const CameraConfig& cam) {
+  const RailModel rail;
+  Simulation sim(rail.model);
+  sim.Forward();
+  TactileSensorSpec spec = NoiseFree();
+  spec.camera = cam;
+  TactileSensor sensor(spec, rail.ids, 1, 2);
+  sensor.Rest(sim);
+  const PinFrame& frame = sensor.Capture(sim, 0.0);
+  const PinLattice lattice = PinLattice::Build(rail.spec.skin);
+  int outer = 0;
+  for (const PinGeometry& p : lattice.pins) outer = std::max(outer, p.ring);
+  double sum = 0.0;
+  int n = 0;
+  for (size_t i = 0; i < lattice.size(); ++i) {
+    if (lattice.pins[i].ring != outer) continue;
+    sum += std::hypot(frame.pos_px(static_cast<int>(i), 0) - cam.cx_px, frame.pos_px(static_cast<int>(i), 1) - cam.cy_px);
+    ++n;
+  }
+  return sum / n;
+}
+
+// real-sensor.md section 1: the 127-pin TacTip's outer ring at 131 px in its 640x480 frames;
+// the public pose datasets' 256x256 crops at ~84 px (section 5); within 5 %.
+TEST(CameraPresetTest, TheDefaultCameraPutsTheOuterRingWhereTheRealTacTipHasIt) {
+  const CameraConfig defaults;
+  EXPECT_EQ(defaults.width_px, 640);
+  EXPECT_EQ(defaults.height_px, 480);
+  EXPECT_NEAR(OuterRingRadiusPx(PresetCamera("tactip-640x480")), 131.0, 0.05 * 131.0);
+  CameraConfig plain = defaults;
+  plain.pixel_noise_px = 0.0;
+  EXPECT_NEAR(OuterRingRadiusPx(plain), 131.0, 0.05 * 131.0);
+}
+
+TEST(CameraPresetTest, ThePoseDatasetCropAndTheLegacyCamera) {
+  const CameraConfig pose = PresetKeys("pose-dataset-256");
+  EXPECT_EQ(pose.width_px, 256);
+  EXPECT_EQ(pose.height_px, 256);
+  EXPECT_NEAR(OuterRingRadiusPx(PresetCamera("pose-dataset-256")), 84.4, 0.05 * 84.4);
+  // The legacy camera (f = 580 px) puts the ring ~1.54x further out.
+  EXPECT_GT(OuterRingRadiusPx(PresetCamera("legacy")), 190.0);
+  // Its noise is the independent 0.28 px of the datasets made before; the default is structured.
+  EXPECT_EQ(PresetKeys("legacy").noise_model, "independent");
+  EXPECT_EQ(PresetKeys("legacy").pixel_noise_px, 0.28);
+  EXPECT_EQ(CameraConfig().noise_model, "structured");
+  // The crop's noise scales with its pixels.
+  EXPECT_NEAR(pose.pixel_noise_px / CameraConfig().pixel_noise_px, 84.4 / 131.0, 1e-3);
+}
+
+TEST(CameraPresetTest, AnUnknownPresetIsRefusedByName) {
+  try {
+    CameraPreset("gopro");
+    FAIL() << "accepted an unknown camera";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'gopro': unknown camera"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(CameraPresetNames().front(), "tactip-640x480");
 }
 
 }  // namespace

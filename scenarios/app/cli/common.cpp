@@ -12,6 +12,7 @@
 
 #include "models/skin.h"
 #include "scenarios/app/cli/option_checks.h"
+#include "sensors/camera_presets.h"
 #include "sim/base/number_text.h"
 #include "sim/base/progress.h"
 
@@ -44,6 +45,7 @@ void ConfigArgs::Add(CLI::App* c, bool with_scenario) {
                          "skin.rim), and for a fingerprint skin its step "
                          "sim.timestep_s: {} for v1, {} for v2; applied before --set).",
                          *SkinPresetTimestep("fingerprint-v1"), *SkinPresetTimestep("fingerprint-v2")));
+  AddCamera(c);
 }
 
 void ConfigArgs::AddFileAndSets(CLI::App* c, const std::string& config_help, const std::string& set_help) {
@@ -53,6 +55,15 @@ void ConfigArgs::AddFileAndSets(CLI::App* c, const std::string& config_help, con
 
 void ConfigArgs::AddSkin(CLI::App* c, const std::string& help) {
   c->add_option("--skin", skin, help)->check(NonEmpty("one of smooth, fingerprint-v1, fingerprint-v2"));
+}
+
+void ConfigArgs::AddCamera(CLI::App* c) {
+  c->add_option("--camera", camera,
+                "Camera preset: tactip-640x480 (the default camera: the real 127-pin TacTip's, outer ring 131 px), "
+                "pose-dataset-256 (the 256x256 crops of the public TacTip pose datasets, outer ring 84 px) or legacy "
+                "(f = 580 px and independent 0.28 px noise, as before the real-camera calibration); sets sensor.* "
+                "keys after --skin, before --set.")
+      ->check(CLI::IsMember(CameraPresetNames()));
 }
 
 void ConfigArgs::AddImages(CLI::App* c) {
@@ -94,6 +105,10 @@ ConfigSource ConfigArgs::Source() const {
   src.auto_timestep = auto_timestep;
   src.yaml_path = config_path;
   if (!skin.empty()) src.overrides = SkinPresetOverrides(skin);
+  if (!camera.empty()) {
+    const std::vector<std::string> keys = CameraPreset(camera);
+    src.overrides.insert(src.overrides.end(), keys.begin(), keys.end());
+  }
   if (!std::isnan(speed_mm_s)) src.overrides.push_back(fmt::format("rail.retract_speed_mm_s={}", speed_mm_s));
   if (!stimulus.empty()) src.overrides.push_back("rail.stimulus=" + stimulus);
   if (images) src.overrides.push_back("images.enabled=true");

@@ -19,7 +19,7 @@ std::string Fmt(double v, const char* spec = "{:.3f}");
 double Attr(const RunRecord& r, const std::string& key);
 
 /// The options that choose a scenario and its config: scenario name, --config, --set and
-/// the shortcuts (--speed-mm-s, --stimulus, --skin).
+/// the shortcuts (--speed-mm-s, --stimulus, --skin, --camera).
 struct ConfigArgs {
   std::string scenario;            ///< scenario name
   std::string config_path;         ///< --config YAML file
@@ -27,6 +27,7 @@ struct ConfigArgs {
   double speed_mm_s = std::nan("");///< --speed-mm-s (NaN: not given)
   std::string stimulus;            ///< --stimulus
   std::string skin;                ///< --skin preset
+  std::string camera;              ///< --camera preset
   bool auto_timestep = false;      ///< --auto-timestep
   bool images = false;             ///< --images
 
@@ -37,11 +38,14 @@ struct ConfigArgs {
   void AddFileAndSets(CLI::App* c, const std::string& config_help, const std::string& set_help);
   /// Registers --skin on `c`, with this help text.
   void AddSkin(CLI::App* c, const std::string& help);
+  /// Registers --camera on `c`.
+  void AddCamera(CLI::App* c);
   /// Registers --images on `c` (shorthand for --set images.enabled=true).
   void AddImages(CLI::App* c);
   /// Registers --auto-timestep on `c`.
   void AddAutoTimestep(CLI::App* c);
-  /// The config source: file, skin preset, shortcuts (--images among them), then --set in order.
+  /// The config source: file, skin preset, camera preset, shortcuts (--images among them),
+  /// then --set in order.
   ConfigSource Source() const;
 };
 

@@ -149,6 +149,8 @@ int RunSpeedStudy(const std::vector<std::string>& scenes, const std::vector<std:
 struct DetectArgs {
   std::string kind, kernel = "rbf", data, runs, out, model, sensor;
   std::string pins = "camera";  // --pins: camera or detected
+  std::string labels = "exact";  // --labels: exact or marker
+  std::string standard_set = "easy";  // bench --standard-set
   TrainArgs train;
   int window = 5, count_thr = 4;
   double speed_thr = 0.2;
@@ -175,6 +177,15 @@ void AddPinsOption(CLI::App* c, std::string& pins) {
       ->check(CLI::IsMember({"camera", "detected"}));
 }
 
+// Registers --labels on `c` into `labels`.
+void AddLabelsOption(CLI::App* c, std::string& labels) {
+  c->add_option("--labels", labels,
+                "Slip onsets to train and score with: exact (the simulator's gross-slip onset, events/gross_slip_onset_s; "
+                "default) or marker (the hardware's way: a camera tracking a marker on the object, "
+                "events/marker_onset_s, settings in the marker_camera section).")
+      ->check(CLI::IsMember({"exact", "marker"}));
+}
+
 // The detector `kind` (threshold, logreg, svm-linear or svm-rbf) trained on `data`.
 std::unique_ptr<Detector> TrainDetector(const std::string& kind, const std::vector<LabeledRun>& data,
                                         const TrainOptions& opts) {
@@ -197,7 +208,8 @@ int RunTrain(const DetectArgs& s, const CLI::App* train, const std::vector<int>&
   TrainOptions opts = s.train.Options();
   opts.progress = [](const std::string& line) { Progress(line); };
   CheckWritableLocation(s.out);
-  const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame, s.sensor, ParsePinSource(s.pins));
+  const std::vector<LabeledRun> data = LoadDatasetRuns(s.data, runs, s.train.score_onset_frame, s.sensor, ParsePinSource(s.pins),
+                                                       ParseOnsetLabels(s.labels));
   NoteFlaggedRuns(s.data, runs);
   const std::string kind = s.kind == "svm" ? "svm-" + s.kernel : s.kind;
   if (kind != "threshold") s.train.CheckFolds(train, data.size());  // only the others cross-validate
@@ -241,6 +253,8 @@ int RunSlipBench(const DetectArgs& s, const CLI::App* bench, const std::atomic<b
   BenchOptions o;
   o.out_dir = s.bench_out;
   o.dataset = s.bench_dataset;
+  o.standard_set = s.standard_set;
+  o.labels = ParseOnsetLabels(s.labels);
   o.runs = s.bench_runs;
   o.seed = s.bench_seed;
   o.jobs = s.jobs;
@@ -257,6 +271,9 @@ int RunSlipBench(const DetectArgs& s, const CLI::App* bench, const std::atomic<b
     NoteFlaggedRuns(o.dataset);
   }
   s.train.CheckFolds(bench, runs / 2);  // the first half trains
+  if (o.standard_set == "mixed" && !std::isnan(s.speed)) {
+    throw InputError("--speed-mm-s: the mixed set draws every run's speed from 0.1-5 mm/s; use --standard-set easy");
+  }
   std::vector<std::string> sets;
   if (!std::isnan(s.speed)) sets.push_back(fmt::format("rail.retract_speed_mm_s={}", s.speed));
   sets.insert(sets.end(), s.sets.begin(), s.sets.end());
@@ -309,6 +326,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
       ->check(CLI::IsMember({"rbf", "linear"}));
   AddSensorOption(train, s.sensor);
   AddPinsOption(train, s.pins);
+  AddLabelsOption(train, s.labels);
   s.train.Add(train);
 
   eval = app.add_subcommand("evaluate", "Score a trained model on runs of a dataset (metrics table).");
@@ -325,6 +343,7 @@ void AddTrainEvaluateDetect(CLI::App& app, DetectArgs& s, CLI::App*& train, CLI:
                  "Score the frame whose velocity spans the onset as slip (default: not scored).");
   AddSensorOption(eval, s.sensor);
   AddPinsOption(eval, s.pins);
+  AddLabelsOption(eval, s.labels);
 
   detect = app.add_subcommand(
       "detect", "Run a detector over recorded frames (HDF5 dataset or real-TacTip CSV) and write its decisions.");
@@ -364,6 +383,13 @@ CLI::App* AddBench(CLI::App& app, DetectArgs& s) {
   AddSensorOption(bench, s.sensor)->needs(dataset);
   bench->add_option("--runs", s.bench_runs, "Runs of the standard dataset (default 40; half train, half test).")
       ->check(CLI::Range(4, 10000));
+  bench->add_option("--standard-set", s.standard_set,
+                    "The standard set generated: easy (the flat stimulus at 0.1 mm/s; default) or mixed (flat, "
+                    "curved80, curved40 and curved20, a quarter of the runs each, every run's retraction speed drawn "
+                    "from 0.1-5 mm/s; half of each stimulus's runs train).")
+      ->check(CLI::IsMember({"easy", "mixed"}))
+      ->excludes(dataset);
+  AddLabelsOption(bench, s.labels);
   bench->add_option("--speed-mm-s", s.speed,
                     "Shortcut for --set rail.retract_speed_mm_s=V for the generated dataset (default 0.1).")
       ->check(FiniteNumber());
@@ -406,7 +432,8 @@ std::function<int()> AddDetectorCommands(CLI::App& app, const std::atomic<bool>*
     if (*eval) {
       std::unique_ptr<Detector> det = WithResponse(LoadDetector(s->model), s->response);
       const std::vector<LabeledRun> data =
-          LoadDatasetRuns(s->data, runs, s->score_onset_frame, s->sensor, ParsePinSource(s->pins));
+          LoadDatasetRuns(s->data, runs, s->score_onset_frame, s->sensor, ParsePinSource(s->pins),
+                          ParseOnsetLabels(s->labels));
       NoteFlaggedRuns(s->data, runs);
       const Evaluation e = Evaluate(*det, data, s->train.n_slip);
       std::printf("%s", FormatEvaluation(e, s->per_run).c_str());

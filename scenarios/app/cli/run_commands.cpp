@@ -168,6 +168,7 @@ CLI::App* AddRailCatch(CLI::App* run, CatchArgs& a) {
       "catch the object. Scores each trial caught / false_positive / dropped with the slip distance.");
   a.config.AddFileAndSets(c, "YAML config file of the rail scenario.", "Override one rail config key (repeatable).");
   a.config.AddSkin(c, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2.");
+  a.config.AddCamera(c);
   c->add_option("--model", a.model, fmt::format("Trained detector (default: {}, which 'tactip bench' writes).",
                                                 kBenchDefaultModel))
       ->check(NonEmpty("a model file"));
@@ -243,6 +244,7 @@ CLI::App* AddIncipientStop(CLI::App* run, StopArgs& a) {
       "stopped_late / missed. Config: the incipient scenario's (fingerprint-v2 skin by default).");
   a.config.AddFileAndSets(c, "YAML config file of the incipient scenario.", "Override one config key (repeatable).");
   a.config.AddSkin(c, "Skin preset: smooth, fingerprint-v1 or fingerprint-v2 (default).");
+  a.config.AddCamera(c);
   c->add_option("--speed-mm-s", a.config.speed_mm_s, "Speed of each retraction step (default 0.3 mm/s).")
       ->check(NumberWithin(0.1, 20.0));
   c->add_option("--step-mm", a.loop.step_mm, "Retraction per step (default 0.2 mm).")->check(FiniteNumber());

@@ -1,9 +1,12 @@
 #include "scenarios/app/cli/track_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "detectors/pin_csv.h"
 #include "scenarios/app/cli/option_checks.h"
@@ -20,9 +23,40 @@ namespace {
 struct TrackArgs {
   std::string images;       // folder of PNG frames
   std::string out;          // pin CSV
+  std::string counts;       // per-frame counts CSV (optional)
   double fps_hz = 100.0;    // frame rate of the recording
-  TactileImageConfig blobs; // detector and gate settings (the images section's defaults)
+  double gate_px = 0.0, min_area_px = 0.0;  // 0: chosen from the first frame
 };
+
+// The per-frame counts: frame,time_s,pins_found,markers.
+std::string CountsCsv(const TrackedRecording& r) {
+  std::string csv = "frame,time_s,pins_found,markers\n";
+  for (size_t k = 0; k < r.frames.size(); ++k) {
+    csv += fmt::format("{},{},{},{}\n", k, r.frames[k].time_s, r.found[k], r.blobs[k]);
+  }
+  return csv;
+}
+
+// One line on the settings chosen and one on what the frames showed.
+void PrintSummary(const TrackedRecording& r) {
+  const FrameBlobParams& p = r.params;
+  ProgressF("markers: %s on %s, threshold %.0f, areas %.0f-%.0f px (first frame: %d markers, median %.0f px), "
+            "gate %.1f px\n",
+            p.inverted ? "dark" : "bright", p.inverted ? "bright" : "dark", p.threshold, p.min_area_px,
+            p.max_area_px, p.markers, p.median_area_px, p.gate_px);
+  const int n = r.frames.front().size();
+  long long found = 0;
+  int all = 0, fewest = n;
+  for (int f : r.found) {
+    found += f;
+    all += f == n ? 1 : 0;
+    fewest = std::min(fewest, f);
+  }
+  ProgressF("pins found: all %d in %d of %zu frames (%.1f %%), at least %d in every frame; %.2f %% of pin "
+            "detections\n",
+            n, all, r.frames.size(), 100.0 * all / r.frames.size(), fewest,
+            100.0 * static_cast<double>(found) / (static_cast<double>(n) * r.frames.size()));
+}
 
 // tactip track: every frame read and tracked before the CSV is written (atomically).
 int RunTrack(const TrackArgs& a) {
@@ -31,14 +65,21 @@ int RunTrack(const TrackArgs& a) {
   for (const std::string& f : files) inputs.push_back({"--images", f});
   CheckOutputsAreNotInputs({{"--out", a.out}}, inputs);
   CheckWritableLocation(a.out);
-  const std::vector<PinFrame> frames = TrackPngFrames(files, a.fps_hz, a.blobs);
-  WritePinCsv(a.out, frames);
-  long long misses = 0;
-  for (const PinFrame& f : frames) {
-    for (unsigned char v : f.valid) misses += v ? 0 : 1;
+  if (!a.counts.empty()) {
+    inputs.push_back({"--out", a.out});
+    CheckOutputsAreNotInputs({{"--counts", a.counts}}, inputs);
+    CheckWritableLocation(a.counts);
   }
-  ProgressF("tracked %d pins through %zu frames (%lld misses); wrote %s\n", frames.front().size(),
-               frames.size(), misses, a.out.c_str());
+  TrackSettings settings;
+  settings.fps_hz = a.fps_hz;
+  if (a.gate_px > 0.0) settings.gate_px = a.gate_px;
+  if (a.min_area_px > 0.0) settings.min_area_px = a.min_area_px;
+  const TrackedRecording r = TrackPngFrames(files, settings);
+  WritePinCsv(a.out, r.frames);
+  if (!a.counts.empty()) WriteFileAtomic(a.counts, CountsCsv(r));
+  PrintSummary(r);
+  ProgressF("tracked %d pins through %zu frames; wrote %s%s%s\n", r.frames.front().size(), r.frames.size(),
+            a.out.c_str(), a.counts.empty() ? "" : " and ", a.counts.c_str());
   return 0;
 }
 
@@ -59,11 +100,13 @@ std::function<int()> AddTrackCommand(CLI::App& app) {
       ->check(NonEmpty("a file name"));
   c->add_option("--fps", a->fps_hz, "Frame rate of the recording, Hz: frame k is at k / fps s (default 100).")
       ->check(NumberAbove(0.0));
-  c->add_option("--gate-px", a->blobs.gate_px,
-                "Farthest a pin may move between frames, px (default 10; below half the marker spacing).")
+  c->add_option("--counts", a->counts, "Also write frame,time_s,pins_found,markers per frame to this CSV.")
+      ->check(NonEmpty("a file name"));
+  c->add_option("--gate-px", a->gate_px,
+                "Farthest a pin may move between frames, px (default: half the first frame's median marker spacing).")
       ->check(NumberAbove(0.0));
-  c->add_option("--min-blob-area-px", a->blobs.min_blob_area_px,
-                "Smallest blob kept, px^2 (default 12; drops noise specks).")
+  c->add_option("--min-blob-area-px", a->min_area_px,
+                "Smallest marker kept, px^2 (default: a fifth of the first frame's median marker area, at least 3).")
       ->check(NumberWithin(1.0, 1e6));
   return [a, c]() -> int { return *c ? RunTrack(*a) : -1; };
 }

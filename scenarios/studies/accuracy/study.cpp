@@ -18,7 +18,7 @@ namespace tactip {
 namespace {
 
 // Camera noise off: the study compares what the physics does, not the noise draws.
-const std::vector<std::string> kNoiseOff = {"sensor.pixel_noise_px=0", "sensor.dropout_prob=0",
+const std::vector<std::string> kNoiseOff = {"sensor.noise_model=independent", "sensor.pixel_noise_px=0", "sensor.dropout_prob=0",
                                             "external.pixel_noise_px=0"};
 
 double Mean(const std::vector<double>& v) {

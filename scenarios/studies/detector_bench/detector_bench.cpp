@@ -45,28 +45,74 @@ void CheckStop(const BenchOptions& opts) {
   if (opts.stop && opts.stop->load()) throw Interrupted();
 }
 
-// The standard dataset: generated with a fixed seed unless one is given. Sets r's dataset
-// path and retraction speed (NaN for a given dataset).
-void ProvideDataset(const RailScenarioConfig& cfg, const BenchOptions& opts, BenchResult& r) {
-  if (!opts.dataset.empty()) {
-    r.dataset_path = opts.dataset;
-    r.speed_mm_s = std::nan("");
-    return;
-  }
-  r.dataset_path = (std::filesystem::path(opts.out_dir) / "bench-rail.h5").string();
+// Generates `runs` runs of `cfg` with `seed` into `path`.
+void GenerateSet(const RailScenarioConfig& cfg, const BenchOptions& opts, int runs, std::uint64_t seed,
+                 const std::string& path) {
   GenerateOptions g;
-  g.runs = opts.runs;
-  g.seed = opts.seed;
+  g.runs = runs;
+  g.seed = seed;
   g.jobs = opts.jobs;
-  g.out_path = r.dataset_path;
+  g.out_path = path;
   g.stop = opts.stop;
   g.progress = [&](int done, int total, int, const RailRunSummary&) {
     if (done % 10 == 0 || done == total) Log(opts, fmt::format("dataset: {}/{} runs", done, total));
   };
-  Log(opts, fmt::format("generating {} rail runs at {} mm/s (seed {}) into {}", opts.runs, cfg.rail.retract_speed_mm_s,
-                        opts.seed, r.dataset_path));
+  const std::string speed =
+      cfg.rail.retract_speed_max_mm_s > cfg.rail.retract_speed_mm_s
+          ? fmt::format("{}-{}", cfg.rail.retract_speed_mm_s, cfg.rail.retract_speed_max_mm_s)
+          : fmt::format("{}", cfg.rail.retract_speed_mm_s);
+  Log(opts, fmt::format("generating {} rail runs on {} at {} mm/s (seed {}) into {}", runs, cfg.rail.stimulus, speed,
+                        seed, path));
   GenerateRailDataset(cfg, g);
-  r.speed_mm_s = cfg.rail.retract_speed_mm_s;
+}
+
+// The mixed set's mm/s: every run's retraction speed drawn from this range.
+constexpr double kMixedMinSpeed = 0.1, kMixedMaxSpeed = 5.0;
+
+// The standard dataset(s): generated with a fixed seed unless one is given. Sets r's files
+// and retraction speed (NaN for a given dataset or the mixed set's drawn speeds).
+void ProvideDataset(const RailScenarioConfig& cfg, const BenchOptions& opts, BenchResult& r) {
+  r.speed_mm_s = std::nan("");
+  if (!opts.dataset.empty()) {
+    r.set_name = "given";
+    r.dataset_files = {opts.dataset};
+  } else if (opts.standard_set == "mixed") {
+    r.set_name = "mixed";
+    const auto& stimuli = MixedSetStimuli();
+    for (size_t k = 0; k < stimuli.size(); ++k) {
+      RailScenarioConfig c = cfg;
+      c.rail.stimulus = stimuli[k];
+      c.rail.retract_speed_mm_s = kMixedMinSpeed;
+      c.rail.retract_speed_max_mm_s = kMixedMaxSpeed;
+      c.ValidateRules();
+      const std::string path = (std::filesystem::path(opts.out_dir) / ("bench-mixed-" + stimuli[k] + ".h5")).string();
+      GenerateSet(c, opts, opts.runs / static_cast<int>(stimuli.size()), opts.seed + k, path);
+      r.dataset_files.push_back(path);
+    }
+  } else {
+    r.set_name = "easy";
+    r.dataset_files = {(std::filesystem::path(opts.out_dir) / "bench-rail.h5").string()};
+    GenerateSet(cfg, opts, opts.runs, opts.seed, r.dataset_files[0]);
+    r.speed_mm_s = cfg.rail.retract_speed_mm_s;
+  }
+  for (const std::string& f : r.dataset_files) r.dataset_path += (r.dataset_path.empty() ? "" : ", ") + f;
+}
+
+// The runs of every file of the set, split into halves per file: the first trains, the
+// second tests. Runs of the k-th file are numbered k * 100000 + their index.
+void LoadHalves(const BenchOptions& opts, const BenchResult& r, std::vector<LabeledRun>& train,
+                std::vector<LabeledRun>& test) {
+  constexpr int kFileStride = 100000;
+  for (size_t k = 0; k < r.dataset_files.size(); ++k) {
+    std::vector<LabeledRun> all = LoadDatasetRuns(r.dataset_files[k], {}, opts.score_onset_frame, opts.sensor,
+                                                  PinSource::kCamera, opts.labels);
+    if (all.size() < 2) throw InputError(fmt::format("dataset '{}' has fewer than 2 runs", r.dataset_files[k]));
+    const size_t half = all.size() / 2;
+    for (size_t i = 0; i < all.size(); ++i) {
+      all[i].run += static_cast<int>(k) * kFileStride;
+      (i < half ? train : test).push_back(std::move(all[i]));
+    }
+  }
 }
 
 // Saves a trained detector's model, evaluates it on the held-out runs and appends its row.
@@ -117,17 +163,22 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
     throw InputError(fmt::format("--runs = {}: the benchmark needs at least 4 (cross-validation needs 2 training runs)",
                                  opts.runs));
   }
+  if (opts.standard_set != "easy" && opts.standard_set != "mixed") {
+    throw InputError("--standard-set '" + opts.standard_set + "': must be easy or mixed");
+  }
+  if (opts.dataset.empty() && opts.standard_set == "mixed" && opts.runs < 4 * static_cast<int>(MixedSetStimuli().size())) {
+    throw InputError(fmt::format("--runs = {}: the mixed set needs at least {} (4 per stimulus)", opts.runs,
+                                 4 * MixedSetStimuli().size()));
+  }
   CreateOutputFolder(opts.out_dir);
 
   BenchResult r;
   r.seed = opts.seed;
+  r.labels = opts.labels == OnsetLabels::kMarker ? "marker" : "exact";
   ProvideDataset(cfg, opts, r);
-  // Disjoint halves: first half trains, second half tests.
-  std::vector<LabeledRun> all = LoadDatasetRuns(r.dataset_path, {}, opts.score_onset_frame, opts.sensor);
-  if (all.size() < 2) throw InputError(fmt::format("dataset '{}' has fewer than 2 runs", r.dataset_path));
-  const size_t half = all.size() / 2;
-  std::vector<LabeledRun> train(all.begin(), all.begin() + static_cast<long>(half));
-  std::vector<LabeledRun> test(all.begin() + static_cast<long>(half), all.end());
+  // Disjoint halves of every file: the first trains, the second tests.
+  std::vector<LabeledRun> train, test;
+  LoadHalves(opts, r, train, test);
   for (const auto& x : train) r.train_runs.push_back(x.run);
   for (const auto& x : test) r.test_runs.push_back(x.run);
 
@@ -137,8 +188,8 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   const TrainingSet ts = BuildTrainingSet(train, topt);
   r.train_rows = static_cast<long>(ts.y.size());
   for (int y : ts.y) r.train_slip_rows += y;
-  Log(opts, fmt::format("training set: {} frames ({} slip) from runs {}-{}", r.train_rows, r.train_slip_rows,
-                        r.train_runs.front(), r.train_runs.back()));
+  Log(opts, fmt::format("training set: {} frames ({} slip, {} labels) from {} runs", r.train_rows, r.train_slip_rows,
+                        r.labels, r.train_runs.size()));
   if (r.train_slip_rows == 0) {
     throw InputError(fmt::format("dataset '{}': no training run has a gross-slip onset after the retraction starts "
                                  "(objects slipping during the lift are not scored)", r.dataset_path));
@@ -163,9 +214,18 @@ BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts) {
   return r;
 }
 
+const std::vector<std::string>& MixedSetStimuli() {
+  static const std::vector<std::string> stimuli = {"flat", "curved80", "curved40", "curved20"};
+  return stimuli;
+}
+
 std::vector<std::string> BenchOutputFiles(const BenchOptions& opts) {
   std::vector<std::string> files = {"bench.json", "bench.csv", "threshold.model", "logreg.model"};
-  if (opts.dataset.empty()) files.push_back("bench-rail.h5");
+  if (opts.dataset.empty() && opts.standard_set == "mixed") {
+    for (const std::string& s : MixedSetStimuli()) files.push_back("bench-mixed-" + s + ".h5");
+  } else if (opts.dataset.empty()) {
+    files.push_back("bench-rail.h5");
+  }
   for (const std::string base : {"svm-linear", "svm-rbf"}) {
     files.push_back(base + ".model");
     for (FeatureSet f : {FeatureSet::kDrDtheta, FeatureSet::kDr, FeatureSet::kDtheta}) {
@@ -176,9 +236,9 @@ std::vector<std::string> BenchOutputFiles(const BenchOptions& opts) {
 }
 
 std::string FormatBenchTable(const BenchResult& r) {
-  std::string out = fmt::format("dataset {} | train runs {}-{} ({} frames, {} slip) | test runs {}-{}\n",
-                                r.dataset_path, r.train_runs.front(), r.train_runs.back(), r.train_rows,
-                                r.train_slip_rows, r.test_runs.front(), r.test_runs.back());
+  std::string out = fmt::format("set {} | labels {} | dataset {}\ntrain: {} runs ({} frames, {} slip) | test: {} runs\n",
+                                r.set_name, r.labels, r.dataset_path, r.train_runs.size(), r.train_rows,
+                                r.train_slip_rows, r.test_runs.size());
   out += fmt::format("{:<17} {:>6} {:>6} {:>6} {:>7} {:>7} {:>7} {:>8} {:>9} {:>9} | {:>13} {:>17} {:>17}\n",
                      "detector", "F1", "prec", "recall", "acc %", "delay", "delay", "FP/min", "us/frame",
                      "us p99", "hw F1", "hw frames correct", "hw other");
@@ -220,6 +280,9 @@ std::string FormatEvaluation(const Evaluation& e, bool per_run) {
 std::string BenchJson(const BenchResult& r) {
   nlohmann::json j;
   j["dataset"] = {{"path", r.dataset_path},
+                  {"files", r.dataset_files},
+                  {"set", r.set_name},
+                  {"labels", r.labels},
                   {"seed", r.seed},
                   {"retract_speed_mm_s", std::isnan(r.speed_mm_s) ? nlohmann::json() : nlohmann::json(r.speed_mm_s)},
                   {"train_runs", r.train_runs},

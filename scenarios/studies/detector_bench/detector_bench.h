@@ -11,6 +11,7 @@
 #include "detectors/detector.h"
 #include "detectors/metrics.h"
 #include "scenarios/rail/rail.h"
+#include "sensors/slip_data.h"
 
 namespace tactip {
 
@@ -18,6 +19,10 @@ namespace tactip {
 struct BenchOptions {
   std::string out_dir = "bench-results";  ///< where bench.json, bench.csv and models go
   std::string dataset;      ///< existing dataset to use; empty = generate the standard one
+  /// The standard set generated: easy (the flat stimulus at one speed, 0.1 mm/s) or mixed
+  /// (every rail stimulus, a quarter of the runs each, each run's speed drawn from 0.1-5 mm/s).
+  std::string standard_set = "easy";
+  OnsetLabels labels = OnsetLabels::kExact;  ///< onsets to train and score with
   std::string sensor;       ///< sensor of `dataset` whose pins to read; empty = its first
   int runs = 40;            ///< runs of the standard dataset (first half train, second half test)
   std::uint64_t seed = 2026;  ///< dataset and training seed
@@ -47,7 +52,10 @@ struct BenchRow {
 
 /// The benchmark's results.
 struct BenchResult {
-  std::string dataset_path;
+  std::string dataset_path;                ///< the dataset, or the mixed set's files joined by ", "
+  std::vector<std::string> dataset_files;  ///< every file of the set
+  std::string set_name;                    ///< easy, mixed or given (--dataset)
+  std::string labels;                      ///< exact or marker
   std::vector<int> train_runs, test_runs;
   std::uint64_t seed = 0;
   double speed_mm_s = 0.0;
@@ -58,8 +66,12 @@ struct BenchResult {
 /// Runs the benchmark and writes DIR/bench.json, DIR/bench.csv and the models.
 BenchResult RunBench(const RailScenarioConfig& cfg, const BenchOptions& opts);
 
+/// The stimuli of the mixed set, in order.
+const std::vector<std::string>& MixedSetStimuli();
+
 /// The names of the files RunBench writes into opts.out_dir: bench.json, bench.csv, one
-/// model per trained detector and, when it generates the dataset, bench-rail.h5.
+/// model per trained detector and, when it generates the dataset, bench-rail.h5 (easy) or
+/// bench-mixed-STIMULUS.h5 (mixed).
 std::vector<std::string> BenchOutputFiles(const BenchOptions& opts);
 
 /// The table printed by `tactip bench` and `tactip evaluate`.

@@ -30,6 +30,7 @@ PressImages PressAndCapture(const FlatPressOptions& opts, double depth_m) {
   TactileSensorSpec sensor_spec;
   sensor_spec.camera = opts.camera;
   sensor_spec.camera.pixel_noise_px = 0.0;
+  sensor_spec.camera.noise_model = "independent";
   sensor_spec.camera.dropout_prob = 0.0;
   sensor_spec.gel_field = GelField::Build(spec.skin, rig.lattice);
   sensor_spec.apex_x_m = spec.skin.OuterRadiusMm() * 1e-3;

@@ -179,7 +179,7 @@ const char* ExpectName(ExpectHeld e) {
 
 const std::vector<std::string>& StabilityProtocol() {
   static const std::vector<std::string> sets = {
-      "sensor.pixel_noise_px=0",   "sensor.dropout_prob=0",        "rail.press_depth_jitter_mm=0",
+      "sensor.noise_model=independent", "sensor.pixel_noise_px=0", "sensor.dropout_prob=0", "rail.press_depth_jitter_mm=0",
       "contact.friction_jitter=0", "rail.settle_s=0.1",            "rail.press_speed_mm_s=5",
       "rail.lift_mm=15",           "rail.lift_speed_mm_s=30",      "rail.hold_s=0.2",
       "rail.retract_speed_mm_s=1", "rail.post_fall_s=0.1",

@@ -52,7 +52,7 @@ TEST(FormatStopTableTest, MeanLeadCountsOnlyTheStopsBeforeAnOnsetThatCame) {
 TEST(StopControllerTest, RetractsInStepsWithPausesAndHoldsOnceStopped) {
   RailConfig rail;
   rail.retract_speed_mm_s = 1.0;
-  const RailSchedule schedule(rail, 3e-3);
+  const RailSchedule schedule(rail, 3e-3, rail.retract_speed_mm_s);
   StopOptions o;
   o.step_mm = 0.2;
   o.pause_s = 0.3;

@@ -24,9 +24,10 @@ using testing::Slurp;
 /// The fixture predates the gel field (skin.marker_model): its markers are the pin bodies';
 /// the free sliding of fast contacts (sim.free_sliding_speed_mm_s) and the sliding step
 /// (sim.sliding_timestep_s) and the gel's own shear modulus (skin.gel_shear_modulus_kpa: the
-/// lumped shell's E_gel / 3 then).
+/// lumped shell's E_gel / 3 then) and the camera before the real-camera calibration
+/// (--camera legacy: f = 580 px, independent 0.28 px noise).
 const char* kFixtureArgs =
-    "--set skin.marker_model=pins --set skin.gel_shear_modulus_kpa=0 --set sim.free_sliding_speed_mm_s=0 --set sim.sliding_timestep_s=0 --runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
+    "--camera legacy --set skin.marker_model=pins --set skin.gel_shear_modulus_kpa=0 --set sim.free_sliding_speed_mm_s=0 --set sim.sliding_timestep_s=0 --runs 2 --seed 5 --stimulus acrylic --set external.enabled=true --set skin.rings=2 "
     "--set sensor.frame_rate_hz=20 --set rail.lift_mm=5 --set rail.hold_s=0.1 --set rail.settle_s=0.1 "
     "--set rail.retract_speed_mm_s=5 --set rail.post_fall_s=0.1 --jobs 1 --quiet";
 
@@ -55,7 +56,8 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
   // The same config; this version has the gel field's keys, the gel's own shear modulus, the
   // free-sliding speed, the sliding step, the breakaway friction, the friction's slip memory, the shell's damper (and its
   // gel's loss tangent) and
-  // the skin's rim, its membrane links and its normal springs, the pin-noise model and the structured model's sizes
+  // the skin's rim, its membrane links and its normal springs, the pin-noise model and the structured model's sizes,
+  // the marker camera of the hardware-style labels, the retraction speed range
   // (at the values that give the fixture's physics), adds the images
   // section (off, at its defaults) and lists the scene's sensors (the one default TacTip).
   std::string now_yaml = now.header().config_yaml;
@@ -66,7 +68,8 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
         "  membrane_links: \"isotropic\"\n", "  normal_spring: \"axial\"\n", "  ridge_rocking: \"winkler\"\n",
         "  noise_model: \"independent\"\n", "  common_shift_px: 0.19\n", "  common_rotation_deg: 0.089\n",
         "  common_scale_pct: 0.15\n", "  common_time_s: 0.012\n", "  local_noise_px: 0.113\n",
-        "  local_length_pitch: 1.2\n"}) {
+        "  local_length_pitch: 1.2\n", "  retract_speed_max_mm_s: 0\n",
+        "marker_camera:\n  frame_rate_hz: 30\n  mm_per_px: 0.3\n  jitter_px: 0.2\n  threshold_mm: 1\n  reference_s: 0.5\n"}) {
     const size_t at = now_yaml.find(line);
     ASSERT_NE(at, std::string::npos) << line;
     now_yaml.erase(at, line.size());
@@ -82,6 +85,7 @@ TEST_F(LayoutOneFixtureTest, ReadsAsTheSameRunsThisVersionSimulates) {
     RunRecord expected = now.ReadRun(k);
     EXPECT_EQ(expected.actions.actuators.size(), 2u);
     expected.actions = {};  // layout 1 records no controller
+    expected.attrs.erase("marker_onset_s");  // nor the hardware-style onset
     for (SensorRecord& s : expected.sensors) s.pin_first_slip_s.clear();  // nor the first slips (added later)
     RunRecord old_run = old_file.ReadRun(k);
     ASSERT_FALSE(old_run.sensors.at(0).external_px.empty());

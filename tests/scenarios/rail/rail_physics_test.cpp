@@ -26,6 +26,7 @@ RailScenarioConfig Exact(double mass_kg, double mu, double speed_mm_s) {
   c.rail.press_depth_jitter_mm = 0.0;
   c.rail.lift_mm = 20.0;
   c.sensor.pixel_noise_px = 0.0;
+  c.sensor.noise_model = "independent";
   c.sensor.dropout_prob = 0.0;
   return c;
 }

@@ -64,7 +64,7 @@ class TargetsRecordingController : public RailController {
 TEST(RailRunTest, TheRecordHoldsOneSensorTheServoTargetsAtEachFrameAndTheControllersActions) {
   const RailScenarioConfig c = Short();
   const RailScene ids(c, SceneOptions{});
-  const RailSchedule schedule(c.rail, c.rail.press_depth_mm * 1e-3);
+  const RailSchedule schedule(c.rail, c.rail.press_depth_mm * 1e-3, c.rail.retract_speed_mm_s);
   TargetsRecordingController controller(schedule);
   RunRecord rec;
   RailRun(c, ids, 0, 5, controller).Execute(rec, nullptr);
@@ -103,7 +103,7 @@ TEST(RailRunTest, SteppingByHandRecordsWhatExecuteRecords) {
 TEST(RailRunTest, AControllerSeesEveryFrameAndItsTargetsDriveTheArm) {
   const RailScenarioConfig c = Short();
   const RailScene ids(c, SceneOptions{});
-  const RailSchedule schedule(c.rail, c.rail.press_depth_mm * 1e-3);
+  const RailSchedule schedule(c.rail, c.rail.press_depth_mm * 1e-3, c.rail.retract_speed_mm_s);
   CountingController controller(schedule);
   RunRecord rec;
   // No depth jitter draw matters here: the controller holds whatever depth the run pressed.

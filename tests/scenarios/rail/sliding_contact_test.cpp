@@ -34,6 +34,7 @@ SlideForces Slide(double free_sliding_speed_mm_s, RailScenarioConfig c = {}, dou
   c.rail.press_depth_jitter_mm = 0.0;
   c.rail.retract_speed_mm_s = retract_speed_mm_s;
   c.sensor.pixel_noise_px = 0.0;
+  c.sensor.noise_model = "independent";
   c.sensor.dropout_prob = 0.0;
   c.sensor.frame_rate_hz = 500.0;
   c.sim.free_sliding_speed_mm_s = free_sliding_speed_mm_s;

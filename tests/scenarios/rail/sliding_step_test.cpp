@@ -31,6 +31,7 @@ RailScenarioConfig Deterministic(double sliding_timestep_s) {
   c.rail.press_depth_jitter_mm = 0.0;
   c.rail.retract_speed_mm_s = 1.0;
   c.sensor.pixel_noise_px = 0.0;
+  c.sensor.noise_model = "independent";
   c.sensor.dropout_prob = 0.0;
   c.sim.sliding_timestep_s = sliding_timestep_s;
   return c;
@@ -143,7 +144,7 @@ TEST_F(SlidingStepTest, FramesStayOnTheCamerasGridAfterTheSwitch) {
   c.sim.timestep_s = 1.0 / 510.0;
   ASSERT_DOUBLE_EQ(c.sim.SlidingTimestep(), 1.0 / 1020.0);
   const RailScene ids(c, SceneOptions{});
-  FrameGridController controller(RailSchedule(c.rail, c.rail.press_depth_mm * 1e-3));
+  FrameGridController controller(RailSchedule(c.rail, c.rail.press_depth_mm * 1e-3, c.rail.retract_speed_mm_s));
   RailRun run(c, ids, 0, 1, controller);
   RunRecord rec;
   const RailRunSummary s = run.Execute(rec, nullptr);

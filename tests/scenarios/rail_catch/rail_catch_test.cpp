@@ -105,7 +105,9 @@ class RailCatchTest : public ::testing::Test {
 TEST_F(RailCatchTest, ADetectorThatFiresOnSlipCatchesAndALongerLoopLetsTheObjectSlideFurther) {
   CatchOptions quick, slow;
   slow.arm_response_ms = 80.0;
-  const auto fast_trials = Trials(0.3, quick), slow_trials = Trials(0.3, slow);
+  // 0.8 px/frame: above the held frames' |mean pin velocity| at 1-3 mm/s (at most 0.8 on the
+  // default camera and noise), below the slip spike (1.4-1.8).
+  const auto fast_trials = Trials(0.8, quick), slow_trials = Trials(0.8, slow);
   double fast_mm = 0.0, slow_mm = 0.0;
   for (const CatchTrial& t : fast_trials) {
     EXPECT_EQ(t.outcome, CatchOutcome::kCaught) << "trial " << t.trial;

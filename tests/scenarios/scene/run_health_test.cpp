@@ -96,6 +96,7 @@ RailScenarioConfig Quiet(const HealthScene& s) {
   c.rail.lift_mm = 20.0;
   c.rail.retract_speed_mm_s = 0.2;
   c.sensor.pixel_noise_px = 0.0;
+  c.sensor.noise_model = "independent";
   c.sensor.dropout_prob = 0.0;
   return c;
 }

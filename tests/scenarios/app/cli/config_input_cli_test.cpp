@@ -95,6 +95,16 @@ TEST_F(ConfigInputCliTest, TooFewSolverIterationsAreRefused) {
   EXPECT_EQ(Run("config rail --set sim.iterations=20").code, 0);
 }
 
+TEST_F(ConfigInputCliTest, ASpeedRangeMustStartAtTheRetractionSpeed) {
+  ExpectRefused("rail --set rail.retract_speed_max_mm_s=0.05",
+                "rail.retract_speed_max_mm_s = 0.05: must be 0 (one speed) or at least rail.retract_speed_mm_s = 0.1 mm/s");
+  EXPECT_EQ(Run("config rail --set rail.retract_speed_max_mm_s=5").code, 0);
+}
+
+TEST_F(ConfigInputCliTest, AnUnknownCameraPresetIsRefused) {
+  ExpectRefused("rail --camera gopro", "--camera");
+}
+
 TEST_F(ConfigInputCliTest, CameraIntrinsicsMustFitTheImage) {
   ExpectRefused("rail --set sensor.fx_px=1e40", "sensor.fx_px = 1e+40: must be <= 163840");
   ExpectRefused("rail --set sensor.cx_px=1e308", "sensor.cx_px = 1e+308: must be <= 8192");

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <string>
@@ -190,6 +191,7 @@ TEST_F(DetectCliTest, BadDetectorInputGetsOneLineAndExitCode2) {
   std::ofstream(P("bad.csv")) << "frame,time_s,pin,x_px,y_px\n0,0.0,0,1,1\n0,0.0,1,2,2\n1,0.01,0,1,1\n";
   std::ofstream(P("back.csv")) << "frame,time_s,pin,x_px,y_px\n0,0.02,0,1,1\n1,0.01,0,1,1\n";
   std::ofstream(P("nan.csv")) << "frame,time_s,pin,x_px,y_px\n0,0.0,0,nan,1\n";
+  std::ofstream(P("nan_time.csv")) << "frame,time_s,pin,x_px,y_px\n0,0.0,0,1,1\n1,nan,0,1,1\n";
   struct Case {
     std::string args, fragment;
   } cases[] = {
@@ -206,6 +208,7 @@ TEST_F(DetectCliTest, BadDetectorInputGetsOneLineAndExitCode2) {
       {"detect incipient --data " + P("bad.csv") + " --out " + P("x.csv"), "frame 1 has 1 pins"},
       {"detect incipient --data " + P("back.csv") + " --out " + P("x.csv"), "time not increasing"},
       {"detect incipient --data " + P("nan.csv") + " --out " + P("x.csv"), "nan.csv"},
+      {"detect incipient --data " + P("nan_time.csv") + " --out " + P("x.csv"), "time_s 'nan' is not finite"},
   };
   for (const auto& c : cases) {
     const CliResult r = Run(c.args);
@@ -309,6 +312,71 @@ TEST_F(DetectCliTest, BenchOnAGivenDatasetIsReproducible) {
                           "\"delay_ms\"", "\"fp_per_min\"", "\"us_per_frame_mean\"", "\"us_per_frame_p99\""}) {
     EXPECT_NE(json.find(key), std::string::npos) << key;
   }
+}
+
+// The onset column of `evaluate --per-run`'s run lines.
+std::vector<int> OnsetFrames(const std::string& table) {
+  std::vector<int> out;
+  for (const std::string& line : SplitLines(table)) {
+    std::stringstream ss(line);
+    int run = 0, tp = 0, fp = 0, tn = 0, fn = 0, onset = 0;
+    if (ss >> run >> tp >> fp >> tn >> fn >> onset) out.push_back(onset);
+  }
+  return out;
+}
+
+TEST_F(DetectCliTest, MarkerLabelsScoreWithTheMarkerCamerasLaterOnset) {
+  const std::string model = P("thr_marker.model");
+  ASSERT_EQ(Run("train threshold --data " + P("d.h5") + " --runs 0-3 --labels marker --out " + model).code, 0);
+  const CliResult exact = Run("evaluate --model " + model + " --data " + P("d.h5") + " --runs 4-5 --per-run");
+  const CliResult marker =
+      Run("evaluate --model " + model + " --data " + P("d.h5") + " --runs 4-5 --per-run --labels marker");
+  ASSERT_EQ(exact.code, 0) << exact.err;
+  ASSERT_EQ(marker.code, 0) << marker.err;
+  const std::vector<int> a = OnsetFrames(exact.out), b = OnsetFrames(marker.out);
+  ASSERT_EQ(a.size(), 2u) << exact.out;
+  ASSERT_EQ(b.size(), 2u) << marker.out;
+  // The object has to drop 1 mm before the marker camera sees it: 2-8 frames at 100 fps.
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_GE(b[i] - a[i], 2) << exact.out << marker.out;
+    EXPECT_LE(b[i] - a[i], 8) << exact.out << marker.out;
+  }
+  const CliResult bad = Run("evaluate --model " + model + " --data " + P("d.h5") + " --labels camera");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--labels"), std::string::npos) << bad.err;
+}
+
+TEST_F(DetectCliTest, TheMixedSetHasEveryStimulusAndDrawnSpeeds) {
+  const CliResult r = Run("bench --standard-set mixed --runs 16 --labels marker --set rail.lift_mm=10 --set "
+                          "rail.hold_s=0.1 --c-grid 1 --gamma-grid 0.25 --folds 2 --jobs 2 --out " + P("mixed"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("set mixed | labels marker"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("train: 8 runs"), std::string::npos) << r.out;
+  std::vector<double> speeds;
+  for (const std::string& stimulus : MixedSetStimuli()) {
+    const DatasetReader reader(P("mixed/bench-mixed-" + stimulus + ".h5"));
+    ASSERT_EQ(reader.run_indices().size(), 4u) << stimulus;
+    for (int k : reader.run_indices()) {
+      const RunRecord run = reader.ReadRunSummary(k);
+      EXPECT_EQ(run.text_attrs.at("stimulus"), stimulus);
+      speeds.push_back(run.attrs.at("retract_speed_mm_s"));
+    }
+  }
+  for (double v : speeds) {
+    EXPECT_GE(v, 0.1);
+    EXPECT_LE(v, 5.0);
+  }
+  EXPECT_GT(*std::max_element(speeds.begin(), speeds.end()) - *std::min_element(speeds.begin(), speeds.end()), 1.0);
+  BenchOptions o;
+  o.standard_set = "mixed";
+  std::set<std::string> expected, written;
+  for (const auto& f : BenchOutputFiles(o)) expected.insert(f);
+  for (const auto& e : fs::directory_iterator(P("mixed"))) written.insert(e.path().filename().string());
+  EXPECT_EQ(written, expected);
+  const CliResult speed = Run("bench --standard-set mixed --speed-mm-s 1 --out " + P("m2"));
+  EXPECT_EQ(speed.code, 2);
+  EXPECT_NE(speed.err.find("--speed-mm-s"), std::string::npos) << speed.err;
+  EXPECT_FALSE(fs::exists(P("m2")));
 }
 
 }  // namespace

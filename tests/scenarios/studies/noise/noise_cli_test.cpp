@@ -29,13 +29,10 @@ double SummaryValue(const std::string& table, const std::string& figure) {
 }
 
 TEST_F(NoiseCliTest, TheStructuredModelHasTheCommonModeTheIndependentOneLacks) {
-  ASSERT_EQ(Run(kQuickRail + " --set sensor.noise_model=independent --out " + P("i.h5")).code, 0);
-  // The structured model's sizes are the real 640x480 camera's (outer ring 131 px, f = 377 px).
-  ASSERT_EQ(Run(kQuickRail +
-                " --set sensor.noise_model=structured --set sensor.pixel_noise_px=0.139 --set sensor.fx_px=377 "
-                "--set sensor.fy_px=377 --out " + P("s.h5"))
-                .code,
-            0);
+  // The independent model of the legacy camera (f = 580 px, 0.28 px) and the default: the
+  // structured model on the real 640x480 camera (outer ring 131 px, f = 377 px).
+  ASSERT_EQ(Run(kQuickRail + " --camera legacy --out " + P("i.h5")).code, 0);
+  ASSERT_EQ(Run(kQuickRail + " --out " + P("s.h5")).code, 0);
   const CliResult i = Run("report noise " + P("i.h5"));
   const CliResult s = Run("report noise " + P("s.h5") + " --csv " + P("s.csv"));
   ASSERT_EQ(i.code, 0) << i.err;
