@@ -21,14 +21,15 @@ namespace {
 
 /// Bias feature appended to every row.
 constexpr double kHingeBias = 1.0;
-/// The dual solver's stopping tolerance (liblinear's default for it).
-constexpr double kHingeEps = 0.1;
+/// The primal solver's stopping tolerance (liblinear's default for it).
+constexpr double kHingeEps = 0.01;
 
 struct HingeRows : NodeRows<feature_node> {
   explicit HingeRows(const Eigen::MatrixXf& x) : NodeRows<feature_node>(x, kHingeBias) {}
 };
 
-/// One L2-regularised hinge-loss SVM on `rows`.
+/// One L2-regularised squared-hinge-loss SVM on `rows`, by liblinear's primal trust-region
+/// Newton solver: deterministic (its dual solvers draw from rand(), which the folds' threads share).
 HingeModelPtr TrainOne(HingeRows& rows, std::vector<double>& y, int dim, double c) {
   ::problem prob{};
   prob.l = static_cast<int>(y.size());
@@ -37,7 +38,7 @@ HingeModelPtr TrainOne(HingeRows& rows, std::vector<double>& y, int dim, double 
   prob.x = rows.rows.data();
   prob.bias = kHingeBias;
   ::parameter param{};
-  param.solver_type = L2R_L1LOSS_SVC_DUAL;
+  param.solver_type = L2R_L2LOSS_SVC;
   param.eps = kHingeEps;
   param.C = c;
   param.p = 0.1;

@@ -1,7 +1,8 @@
 #pragma once
-// The linear SVM's training: liblinear's dual coordinate descent on the L2-regularised hinge
-// loss (the linear C-SVC, the bias a feature of value 1), because libsvm's kernel solver does
-// not converge on noisy frames (it reaches its cap of 10^7 iterations). The fit is written as
+// The linear SVM's training: liblinear's primal trust-region Newton solver on the
+// L2-regularised squared hinge loss (the L2-loss linear SVM, the bias a feature of value 1;
+// deterministic), because libsvm's kernel solver does not converge on noisy frames (it reaches
+// its cap of 10^7 iterations). The fit is written as
 // a libsvm linear model with one support vector, w with coefficient 1, and rho = -b, so the
 // detector's model file, loading and streaming are those of every other SVM.
 
